@@ -1,0 +1,75 @@
+#include "talus/collide/cell_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace talus {
+
+void CellGrid::setup(const Domain& domain, const std::vector<Vec3>& position, std::size_t owned,
+                     double range) {
+  Vec3 lo = domain.lo, hi = domain.hi;
+  if (owned > 0) {
+    Vec3 mn = position[0], mx = position[0];
+    for (std::size_t i = 1; i < owned; ++i)
+      for (int a = 0; a < 3; ++a) {
+        mn[a] = std::min(mn[a], position[i][a]);
+        mx[a] = std::max(mx[a], position[i][a]);
+      }
+    for (int a = 0; a < 3; ++a)
+      if (!domain.periodic[a]) lo[a] = mn[a], hi[a] = mx[a];
+  }
+  for (int a = 0; a < 3; ++a)
+    count_[a] = std::max(1, static_cast<int>(std::min(std::floor((hi[a] - lo[a]) / range), 1e6)));
+  // A stray particle far away must not make the grid huge: cap the cells at a few per particle.
+  const double limit = std::max<double>(4096, 4.0 * static_cast<double>(owned));
+  while (static_cast<double>(count_[0] + 2) * (count_[1] + 2) * (count_[2] + 2) > limit) {
+    int a = 0;
+    for (int b = 1; b < 3; ++b)
+      if (count_[b] > count_[a]) a = b;
+    if (count_[a] == 1) break;
+    count_[a] = (count_[a] + 1) / 2;
+  }
+  for (int a = 0; a < 3; ++a) {
+    const double extent = hi[a] - lo[a];
+    const int n = count_[a];
+    origin_[a] = lo[a];
+    width_[a] = extent > 0 ? extent / n : range;
+    first_[a] = domain.periodic[a] ? -1 : 0;
+    last_[a] = domain.periodic[a] ? n : n - 1;
+  }
+  slab_axis_ = 0;
+  for (int a = 1; a < 3; ++a)
+    if (count_[a] > count_[slab_axis_]) slab_axis_ = a;
+}
+
+CellCoord CellGrid::coord_of(const Vec3& x) const {
+  CellCoord c;
+  for (int a = 0; a < 3; ++a) {
+    const int k = static_cast<int>(std::floor((x[a] - origin_[a]) / width_[a]));
+    c[a] = std::clamp(k, 0, count_[a] - 1);
+  }
+  return c;
+}
+
+std::int64_t CellGrid::linear(const CellCoord& c) const {
+  const int s = slab_axis_, p = (s + 1) % 3, q = (s + 2) % 3;
+  const std::int64_t np = last_[p] - first_[p] + 1, nq = last_[q] - first_[q] + 1;
+  return ((static_cast<std::int64_t>(c[s] - first_[s]) * np) + (c[p] - first_[p])) * nq + (c[q] - first_[q]);
+}
+
+std::int64_t CellGrid::linear_size() const {
+  std::int64_t n = 1;
+  for (int a = 0; a < 3; ++a) n *= last_[a] - first_[a] + 1;
+  return n;
+}
+
+void CellGrid::bin(const std::vector<CellCoord>& cell_of) {
+  start_.assign(linear_size() + 1, 0);
+  for (const auto& c : cell_of) ++start_[linear(c) + 1];
+  for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
+  items_.resize(cell_of.size());
+  std::vector<std::int64_t> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < cell_of.size(); ++i) items_[fill[linear(cell_of[i])]++] = static_cast<std::uint32_t>(i);
+}
+
+}  // namespace talus

@@ -1,0 +1,64 @@
+#pragma once
+// Half neighbour list with a skin (each pair once, Newton's third law), in CSR rows over the
+// owned particles, with the contact memory stored beside each entry.
+//
+// Pair orientation makes the force loop race-free and deterministic on any number of threads:
+// owned particles are sorted by slab (a layer of cells along the grid's longest axis), and a
+// pair (i, j) is stored with slab(j) >= slab(i) (ties broken by global id). A slab then writes
+// only to itself and the next slab, so all even slabs can run concurrently, then all odd ones,
+// and every particle receives its contributions in the same order whatever the thread count.
+#include <cstdint>
+#include <vector>
+
+#include "talus/body/particles.h"
+#include "talus/collide/cell_grid.h"
+#include "talus/math/vec3.h"
+
+namespace talus {
+
+// Which per-contact memories the contact law needs.
+struct MemoryLayout {
+  bool spring = false;       ///< tangential displacement delta_t
+  bool normal_prev = false;  ///< previous normal, to turn the memories with the tangent plane
+  bool rolling = false;      ///< rolling torque spring M_k
+};
+
+// Per-entry contact memory, as parallel arrays (an array is empty when its memory is off).
+struct ContactMemory {
+  std::vector<Vec3> spring, normal_prev, rolling;
+  void resize(std::size_t n, const MemoryLayout& layout);
+  bool active(std::size_t e) const;  ///< true if entry e remembers a contact
+  void clear(std::size_t e);
+  // Copies entry `from` of `source` into entry `to`; `reversed` when the pair's order flipped.
+  void copy_from(const ContactMemory& source, std::size_t from, std::size_t to, bool reversed);
+};
+
+class PairList {
+ public:
+  // Builds the list over owned particles (sorted by slab) and ghosts; pairs whose bounding
+  // spheres are within `skin` of touching. Pairs of two fixed particles are left out.
+  void build(const ParticleStore& particles, const std::vector<CellCoord>& cell_of, const CellGrid& grid,
+             double skin, const MemoryLayout& layout);
+  // Carries the memory of every pair still listed over from `old` (keyed by global ids).
+  void transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
+                       const std::vector<std::uint32_t>& gid, std::size_t gid_limit);
+
+  std::size_t rows() const { return row_.empty() ? 0 : row_.size() - 1; }
+  std::uint32_t row_begin(std::size_t i) const { return row_[i]; }
+  std::uint32_t row_end(std::size_t i) const { return row_[i + 1]; }
+  std::uint32_t neighbor(std::size_t e) const { return neighbor_[e]; }
+  std::size_t entries() const { return neighbor_.size(); }
+  std::size_t slabs() const { return slab_start_.empty() ? 0 : slab_start_.size() - 1; }
+  std::uint32_t slab_begin(std::size_t s) const { return slab_start_[s]; }
+  std::uint32_t slab_end(std::size_t s) const { return slab_start_[s + 1]; }
+  std::size_t bytes() const;
+
+  ContactMemory memory;
+
+ private:
+  std::vector<std::uint32_t> row_;
+  std::vector<std::uint32_t> neighbor_;
+  std::vector<std::uint32_t> slab_start_;  ///< first owned particle of each slab
+};
+
+}  // namespace talus

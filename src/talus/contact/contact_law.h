@@ -1,0 +1,150 @@
+#pragma once
+// The spring-dashpot contact law, assembled from small sub-models (normal, tangential,
+// rolling), each taking the contact geometry explicitly. One function serves particle
+// pairs, particle-wall contacts and (later) every contact point between convex parts.
+#include <algorithm>
+#include <cmath>
+
+#include "talus/contact/contact_params.h"
+#include "talus/math/vec3.h"
+
+namespace talus {
+
+// How the tangential force remembers the contact's past.
+enum class TangentialModel {
+  memory,          ///< cumulative displacement rotated with the tangent plane (Huet et al. 2021, Eqs. 6-8)
+  memoryless,      ///< viscous friction only, k_t delta_t and k_r dtheta dropped (Huet et al. 2021, Sect. V B)
+  elastic_spring,  ///< elastic displacement kept tangential by Eq. 9 (Weinhart et al. 2012, Eqs. 7-9, Alg. 2)
+};
+
+struct ContactGeometry {
+  Vec3 normal;               ///< unit normal, from j (or the wall) towards i
+  double overlap = 0;        ///< m, delta_n > 0
+  Vec3 arm_i;                ///< m, contact point minus centre of i
+  Vec3 arm_j;                ///< m, contact point minus centre of j (zero for a wall)
+  double inv_distance = 0;   ///< 1/m, 1/|r_ij| for the Eq. 9 rotation term; 0 when the normal cannot turn (walls)
+};
+
+struct ContactMotion {
+  Vec3 velocity_i, angular_velocity_i;  ///< m/s, rad/s
+  Vec3 velocity_j, angular_velocity_j;  ///< m/s, rad/s (a wall's velocity at the contact point, zero spin)
+};
+
+// Per-contact memory. Zero when the pair is not in contact: a new contact starts from rest.
+struct ContactHistoryRef {
+  Vec3* spring = nullptr;        ///< m, delta_t: cumulative (memory) or elastic (elastic_spring) tangential displacement
+  Vec3* normal_prev = nullptr;   ///< the normal at the previous step, zero before the first (may be null for elastic_spring)
+  Vec3* rolling = nullptr;       ///< N m, spring part M_k of the rolling torque (null when rolling is off)
+};
+
+struct ContactResult {
+  Vec3 force_on_i;         ///< N, the force on i (j receives the opposite)
+  Vec3 torque_i;           ///< N m, about the centre of i
+  Vec3 torque_j;           ///< N m, about the centre of j
+  double normal_force = 0; ///< N, |F_n|
+};
+
+// Rotates v by the smallest rotation taking unit vector a onto unit vector b. This is the
+// q_rot of Huet et al. 2021, Eq. (8), written in closed form (Rodrigues):
+// R v = v + w x v + w x (w x v) / (1 + a.b), w = a x b.
+inline Vec3 rotate_between(const Vec3& a, const Vec3& b, const Vec3& v) {
+  const Vec3 w = cross(a, b);
+  const double c = dot(a, b);
+  if (c <= -1.0 + 1e-12) return -v;  // reversed normal: no unique rotation; a half turn is the limit
+  const Vec3 wv = cross(w, v);
+  return v + wv + cross(w, wv) * (1.0 / (1.0 + c));
+}
+
+template <TangentialModel Model>
+inline ContactResult contact_force(const ContactGeometry& g, const ContactMotion& m,
+                                   const ContactParams& p, double reduced_mass,
+                                   double reduced_radius, double dt, ContactHistoryRef h) {
+  ContactResult out;
+  const Vec3& n = g.normal;
+  // Relative velocity of the contact point of i with respect to that of j.
+  const Vec3 vij = m.velocity_i - m.velocity_j;
+  const Vec3 vc = vij + cross(m.angular_velocity_i, g.arm_i) - cross(m.angular_velocity_j, g.arm_j);
+  const double vn = dot(vc, n);  // < 0 while approaching
+  const Vec3 vt = vc - vn * n;
+
+  // Normal force. Weinhart et al. 2012, Eq. (3); Huet et al. 2021, Eq. (5) adds max(., 0).
+  const double eta_n = p.normal_damping.at(reduced_mass);
+  double fn = p.normal_stiffness * g.overlap - eta_n * vn;
+  if constexpr (Model != TangentialModel::elastic_spring) fn = std::max(fn, 0.0);
+  const double fn_abs = std::abs(fn);
+  const double f_max = p.friction * fn_abs;
+  const double eta_t = p.tangential_damping.at(reduced_mass);
+  const double kt = p.tangential_stiffness;
+
+  Vec3 ft;
+  if constexpr (Model == TangentialModel::memory) {
+    Vec3& spring = *h.spring;
+    // Huet et al. 2021, Eq. (8): carry delta_t into the current tangent plane, then integrate v_t.
+    const Vec3& n_prev = *h.normal_prev;
+    if (norm2(n_prev) > 0) spring = rotate_between(n_prev, n, spring);
+    spring += vt * dt;
+    ft = -kt * spring - eta_t * vt;                  // Huet et al. 2021, Eq. (6), before saturation
+    const double ft2 = norm2(ft);
+    if (ft2 > f_max * f_max) {
+      ft *= f_max / std::sqrt(ft2);                  // Eqs. (6)-(7): mu_c |F_n| u_t,cumul
+      spring = (kt > 0) ? (ft + eta_t * vt) * (-1.0 / kt) : Vec3{};  // Eq. (8), saturated branch
+    }
+  } else if constexpr (Model == TangentialModel::elastic_spring) {
+    Vec3& spring = *h.spring;
+    // Weinhart et al. 2012, Eq. (9) by forward Euler (Alg. 1): the second term turns the spring
+    // with the normal so that it stays tangential.
+    spring += (vt - (dot(spring, vij) * g.inv_distance) * n) * dt;
+    ft = -kt * spring - eta_t * vt;                  // Eq. (7)
+    const double ft2 = norm2(ft);
+    if (ft2 > f_max * f_max) {
+      ft *= f_max / std::sqrt(ft2);                  // Alg. 2: truncate to mu_c |f_n|
+      spring = (kt > 0) ? (ft + eta_t * vt) * (-1.0 / kt) : Vec3{};
+    }
+  } else {
+    // Huet et al. 2021, Sect. V B without memory: viscous friction capped by Coulomb.
+    ft = -eta_t * vt;
+    const double ft2 = norm2(ft);
+    if (ft2 > f_max * f_max) ft *= f_max / std::sqrt(ft2);
+  }
+
+  out.force_on_i = fn * n + ft;
+  out.normal_force = fn_abs;
+  out.torque_i = cross(g.arm_i, out.force_on_i);
+  out.torque_j = cross(g.arm_j, -out.force_on_i);
+
+  if (p.rolling.enabled) {
+    // Huet et al. 2021, Appendix A, Eqs. (A1)-(A5).
+    const Vec3 spin = m.angular_velocity_i - m.angular_velocity_j;  // d(theta)/dt, relative rotation rate
+    const double m_max = p.rolling.friction * reduced_radius * fn_abs;
+    double kr = p.rolling.stiffness, eta_r = p.rolling.damping;
+    if (p.rolling.from_normal) {
+      const double r = 2.0 * reduced_radius;
+      const double scale = 3.0 * p.rolling.friction * p.rolling.friction * r * r;  // Eq. (A9)
+      kr = scale * p.normal_stiffness;
+      eta_r = scale * eta_n;
+    }
+    Vec3 moment;
+    if constexpr (Model == TangentialModel::memoryless) {
+      moment = -eta_r * spin;
+      const double m2 = norm2(moment);
+      if (m2 > m_max * m_max) moment *= m_max / std::sqrt(m2);
+    } else {
+      Vec3& mk = *h.rolling;
+      if (h.normal_prev && norm2(*h.normal_prev) > 0) mk = rotate_between(*h.normal_prev, n, mk);
+      mk -= kr * dt * spin;                          // Eq. (A2)
+      const double mk2 = norm2(mk);
+      if (mk2 > m_max * m_max) {
+        mk *= m_max / std::sqrt(mk2);                // saturated: M_max u_r,cumul, Eq. (A4); M_d = 0, Eq. (A3)
+        moment = mk;
+      } else {
+        moment = mk - eta_r * spin;                  // Eq. (A3)
+      }
+    }
+    out.torque_i += moment;
+    out.torque_j -= moment;
+  }
+  if (h.normal_prev) *h.normal_prev = n;
+  return out;
+}
+
+}  // namespace talus

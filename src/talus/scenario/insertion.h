@@ -1,0 +1,43 @@
+#pragma once
+// Random non-overlapping placement of spheres.
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "talus/math/vec3.h"
+
+namespace talus {
+
+struct Sphere {
+  Vec3 centre;    ///< m
+  double radius;  ///< m
+};
+
+// Overlap queries against a growing set of spheres, on a uniform hash grid (periodic along
+// the flagged axes of the box [lo, hi]).
+class SphereOverlapIndex {
+ public:
+  SphereOverlapIndex(const Vec3& lo, const Vec3& hi, const bool periodic[3], double cell);
+  bool overlaps(const Sphere& s) const;
+  void insert(const Sphere& s);
+  const std::vector<Sphere>& spheres() const { return spheres_; }
+
+ private:
+  long key(int a, int b, int c) const;
+  int cell_index(double x, int axis) const;
+  Vec3 lo_, hi_;
+  bool periodic_[3];
+  double cell_;
+  int count_[3];
+  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<Sphere> spheres_;
+};
+
+// Weinhart et al. 2012, Sect. 5: place `count` spheres at uniform random positions in the box
+// [lo, lo + (size.x, size.y, I)] starting with I = size.z; each rejected (overlapping) attempt
+// raises the top I by `growth`. Returns the final I.
+double insert_growing(SphereOverlapIndex& index, std::size_t count, const Vec3& lo, const Vec3& size,
+                      double growth, const std::function<double(std::mt19937_64&)>& radius, std::mt19937_64& rng);
+
+}  // namespace talus

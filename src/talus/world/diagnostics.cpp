@@ -1,0 +1,165 @@
+// Energies, contact counts and snapshots of a World: read-only passes outside the time step.
+#include <algorithm>
+#include <cmath>
+
+#include "talus/world/world.h"
+
+namespace talus {
+
+namespace {
+// k_r of a contact, as the contact law computes it (Huet et al. 2021, Eq. A9 when from_normal).
+double rolling_stiffness(const ContactParams& c, double reduced_radius) {
+  if (!c.rolling.from_normal) return c.rolling.stiffness;
+  const double r = 2 * reduced_radius;
+  return 3 * c.rolling.friction * c.rolling.friction * r * r * c.normal_stiffness;
+}
+
+void add_contact_energy(Diagnostics& d, const ContactParams& c, double overlap, double radius,
+                        double reduced_radius, const ContactMemory& mem, std::size_t e) {
+  d.elastic_normal += 0.5 * c.normal_stiffness * overlap * overlap;
+  if (!mem.spring.empty()) d.elastic_tangential += 0.5 * c.tangential_stiffness * norm2(mem.spring[e]);
+  if (!mem.rolling.empty() && c.rolling.enabled) {
+    const double kr = rolling_stiffness(c, reduced_radius);
+    if (kr > 0) d.elastic_rolling += 0.5 * norm2(mem.rolling[e]) / kr;
+  }
+  d.max_overlap_ratio = std::max(d.max_overlap_ratio, overlap / radius);
+}
+}  // namespace
+
+Diagnostics World::diagnostics() const {
+  Diagnostics d;
+  d.time = time_;
+  const ParticleStore& p = particles_;
+  std::size_t mobile = 0;
+  double speed_sum = 0;
+  for (std::size_t i = 0; i < p.owned; ++i) {
+    if (p.inv_mass[i] == 0.0) continue;
+    ++mobile;
+    const double m = p.mass[i];
+    const double v2 = norm2(p.velocity[i]);
+    d.kinetic_translational += 0.5 * m * v2;
+    const Vec3 wb = p.orientation[i].rotate_inverse(p.angular_velocity[i]);
+    const Vec3 ii = p.inv_inertia[i];
+    d.kinetic_rotational += 0.5 * (wb.x * wb.x / ii.x + wb.y * wb.y / ii.y + wb.z * wb.z / ii.z);
+    d.gravitational -= m * dot(settings_.gravity, p.position[i]);
+    const double speed = std::sqrt(v2);
+    speed_sum += speed;
+    d.max_speed = std::max(d.max_speed, speed);
+    d.max_angular_speed = std::max(d.max_angular_speed, norm(p.angular_velocity[i]));
+  }
+  d.mean_speed = mobile ? speed_sum / mobile : 0;
+  if (!ready_) return d;
+  for (std::size_t i = 0; i < pairs_.rows(); ++i)
+    for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
+      const std::uint32_t j = pairs_.neighbor(e);
+      const double reach = p.radius[i] + p.radius[j];
+      const double overlap = reach - norm(p.position[i] - p.position[j]);
+      if (overlap <= 0) continue;
+      ++d.contacts;
+      add_contact_energy(d, table_.pair(p.species[i], p.species[j]), overlap, std::min(p.radius[i], p.radius[j]),
+                         p.radius[i] * p.radius[j] / reach, pairs_.memory, e);
+    }
+  for (std::size_t i = 0; i < wall_pairs_.rows(); ++i)
+    for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e) {
+      const Wall& w = walls_[wall_pairs_.wall(e)];
+      if (!w.active(time_) || p.inv_mass[i] == 0.0) continue;
+      const Vec3 origin = w.origin_at(time_);
+      const double overlap = p.radius[i] - dot(p.position[i] - origin, w.normal);
+      if (overlap <= 0 || !wall_faces(w, origin, p.position[i], 0.0)) continue;
+      ++d.wall_contacts;
+      add_contact_energy(d, table_.wall(p.species[i], w.material), overlap, p.radius[i], p.radius[i],
+                         wall_pairs_.memory, e);
+    }
+  return d;
+}
+
+Snapshot World::snapshot() const {
+  Snapshot s;
+  s.time = time_;
+  s.gravity = settings_.gravity;
+  s.domain_min = settings_.domain.lo;
+  s.domain_max = settings_.domain.hi;
+  for (int a = 0; a < 3; ++a) s.periodic[a] = settings_.domain.periodic[a];
+  const ParticleStore& p = particles_;
+  // Particles in global-id order, so that snapshots of a run line up.
+  std::vector<std::uint32_t> order(p.owned);
+  for (std::size_t i = 0; i < p.owned; ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return p.gid[a] < p.gid[b]; });
+  std::vector<int> record_of(p.owned);
+  s.particles.reserve(p.owned);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::uint32_t i = order[k];
+    record_of[i] = static_cast<int>(k);
+    ParticleRecord r;
+    r.id = p.gid[i];
+    r.species = p.species[i];
+    r.shape = p.shape[i];
+    r.fixed = p.inv_mass[i] == 0.0;
+    r.mass = p.mass[i];
+    r.radius = p.radius[i];
+    r.volume = 4.0 / 3.0 * 3.14159265358979323846 * r.radius * r.radius * r.radius;
+    r.position = settings_.domain.wrap(p.position[i]);
+    r.velocity = p.velocity[i];
+    r.angular_velocity = p.angular_velocity[i];
+    r.orientation = p.orientation[i];
+    s.particles.push_back(r);
+  }
+  if (!ready_) return s;
+  // Contact forces are re-evaluated from the stored memories with the current velocities.
+  auto owner = [&](std::uint32_t j) { return j < p.owned ? j : ghosts_.owner(j - p.owned); };
+  ContactMemory scratch = pairs_.memory;
+  for (std::size_t i = 0; i < pairs_.rows(); ++i)
+    for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
+      const std::uint32_t j = pairs_.neighbor(e);
+      const Vec3 d = p.position[i] - p.position[j];
+      const double reach = p.radius[i] + p.radius[j];
+      const double dist = norm(d);
+      if (dist >= reach) continue;
+      ContactGeometry g;
+      g.normal = d / dist;
+      g.overlap = reach - dist;
+      g.arm_i = g.normal * -(p.radius[i] - 0.5 * g.overlap);
+      g.arm_j = g.normal * (p.radius[j] - 0.5 * g.overlap);
+      g.inv_distance = 1 / dist;
+      const ContactMotion m{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
+      const ContactHistoryRef h{scratch.spring.empty() ? nullptr : &scratch.spring[e],
+                                scratch.normal_prev.empty() ? nullptr : &scratch.normal_prev[e],
+                                scratch.rolling.empty() ? nullptr : &scratch.rolling[e]};
+      const ContactParams& c = table_.pair(p.species[i], p.species[j]);
+      const double mij = 1 / (p.inv_mass[i] + p.inv_mass[j]);
+      const double rij = p.radius[i] * p.radius[j] / reach;
+      ContactResult res;
+      switch (settings_.tangential_model) {
+        case TangentialModel::memory: res = contact_force<TangentialModel::memory>(g, m, c, mij, rij, 0, h); break;
+        case TangentialModel::memoryless: res = contact_force<TangentialModel::memoryless>(g, m, c, mij, rij, 0, h); break;
+        case TangentialModel::elastic_spring: res = contact_force<TangentialModel::elastic_spring>(g, m, c, mij, rij, 0, h); break;
+      }
+      ContactRecord rec;
+      rec.i = record_of[i];
+      rec.j = record_of[owner(j)];
+      rec.point = settings_.domain.wrap(p.position[i] + g.arm_i);
+      rec.normal = g.normal;
+      rec.force = res.force_on_i;
+      rec.overlap = g.overlap;
+      s.contacts.push_back(rec);
+    }
+  for (std::size_t i = 0; i < wall_pairs_.rows(); ++i)
+    for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e) {
+      const Wall& w = walls_[wall_pairs_.wall(e)];
+      if (!w.active(time_) || p.inv_mass[i] == 0.0) continue;
+      const Vec3 origin = w.origin_at(time_);
+      const double overlap = p.radius[i] - dot(p.position[i] - origin, w.normal);
+      if (overlap <= 0 || !wall_faces(w, origin, p.position[i], 0.0)) continue;
+      ContactRecord rec;
+      rec.i = record_of[i];
+      rec.wall = wall_pairs_.wall(e);
+      rec.normal = w.normal;
+      rec.point = p.position[i] - w.normal * (p.radius[i] - 0.5 * overlap);
+      rec.force = -wall_pairs_.force_on_wall[e];
+      rec.overlap = overlap;
+      s.contacts.push_back(rec);
+    }
+  return s;
+}
+
+}  // namespace talus

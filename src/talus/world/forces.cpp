@@ -1,0 +1,136 @@
+// The contact-force phase of World::step(): particle pairs by slab colouring, then walls.
+#include <omp.h>
+
+#include "talus/world/parallel.h"
+#include "talus/world/world.h"
+
+namespace talus {
+
+void World::compute_forces(double memory_dt) {
+  ParticleStore& p = particles_;
+  std::fill(p.force.begin(), p.force.end(), Vec3{});
+  std::fill(p.torque.begin(), p.torque.end(), Vec3{});
+  switch (settings_.tangential_model) {
+    case TangentialModel::memory: pair_forces<TangentialModel::memory>(memory_dt); break;
+    case TangentialModel::memoryless: pair_forces<TangentialModel::memoryless>(memory_dt); break;
+    case TangentialModel::elastic_spring: pair_forces<TangentialModel::elastic_spring>(memory_dt); break;
+  }
+  ghosts_.fold_forces(p);
+  if (walls_.empty()) return;
+  switch (settings_.tangential_model) {
+    case TangentialModel::memory: wall_forces<TangentialModel::memory>(memory_dt); break;
+    case TangentialModel::memoryless: wall_forces<TangentialModel::memoryless>(memory_dt); break;
+    case TangentialModel::elastic_spring: wall_forces<TangentialModel::elastic_spring>(memory_dt); break;
+  }
+}
+
+template <TangentialModel Model>
+void World::pair_forces(double memory_dt) {
+  ScopedPhase phase(timer_, Phase::pair_forces);
+  ParticleStore& p = particles_;
+  PairList& list = pairs_;
+  ContactMemory& mem = list.memory;
+  const bool has_spring = !mem.spring.empty();
+  const bool has_normal = !mem.normal_prev.empty();
+  const bool has_rolling = !mem.rolling.empty();
+  const long slabs = static_cast<long>(list.slabs());
+
+  // Slab s writes to slabs s and s + 1 only: even slabs run together, then odd ones.
+  for (int colour = 0; colour < 2; ++colour) {
+#pragma omp parallel for schedule(dynamic, 1) if (worth_parallel(p.owned))
+    for (long s = colour; s < slabs; s += 2) {
+      for (std::uint32_t i = list.slab_begin(s); i < list.slab_end(s); ++i) {
+        const Vec3 xi = p.position[i];
+        const double ri = p.radius[i];
+        const double inv_mi = p.inv_mass[i];
+        const int species_i = p.species[i];
+        Vec3 fi, ti;
+        for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
+          const std::uint32_t j = list.neighbor(e);
+          const Vec3 d = xi - p.position[j];
+          const double rj = p.radius[j];
+          const double reach = ri + rj;
+          const double dist2 = norm2(d);
+          if (dist2 >= reach * reach) {
+            if (has_spring && norm2(mem.spring[e]) > 0) mem.spring[e] = {};
+            if (has_normal && norm2(mem.normal_prev[e]) > 0) mem.clear(e);
+            continue;
+          }
+          const double dist = std::sqrt(dist2);
+          const double inv_dist = 1.0 / dist;
+          ContactGeometry g;
+          g.normal = d * inv_dist;
+          g.overlap = reach - dist;
+          g.arm_i = g.normal * -(ri - 0.5 * g.overlap);  // Weinhart et al. 2012, branch vector b_ij after Eq. (8)
+          g.arm_j = g.normal * (rj - 0.5 * g.overlap);
+          g.inv_distance = inv_dist;
+          const ContactMotion m{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
+          const ContactHistoryRef h{has_spring ? &mem.spring[e] : nullptr, has_normal ? &mem.normal_prev[e] : nullptr,
+                                    has_rolling ? &mem.rolling[e] : nullptr};
+          const double reduced_mass = 1.0 / (inv_mi + p.inv_mass[j]);
+          const double reduced_radius = ri * rj / reach;
+          const ContactResult r = contact_force<Model>(g, m, table_.pair(species_i, p.species[j]), reduced_mass,
+                                                       reduced_radius, memory_dt, h);
+          fi += r.force_on_i;
+          ti += r.torque_i;
+          p.force[j] -= r.force_on_i;
+          p.torque[j] += r.torque_j;
+        }
+        p.force[i] += fi;
+        p.torque[i] += ti;
+      }
+    }
+  }
+}
+
+template <TangentialModel Model>
+void World::wall_forces(double memory_dt) {
+  ScopedPhase phase(timer_, Phase::wall_forces);
+  ParticleStore& p = particles_;
+  WallContactList& list = wall_pairs_;
+  ContactMemory& mem = list.memory;
+  const bool has_spring = !mem.spring.empty();
+  const bool has_normal = !mem.normal_prev.empty();
+  const bool has_rolling = !mem.rolling.empty();
+  const double t = time_;
+  std::vector<Vec3> origin(walls_.size()), wall_velocity(walls_.size());
+  std::vector<char> active(walls_.size());
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    origin[w] = walls_[w].origin_at(t);
+    wall_velocity[w] = walls_[w].velocity_at(t);
+    active[w] = walls_[w].active(t);
+  }
+  const long n = static_cast<long>(list.rows());
+#pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
+  for (long i = 0; i < n; ++i) {
+    if (p.inv_mass[i] == 0.0) continue;  // fixed particles do not feel walls
+    for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
+      const int w = list.wall(e);
+      const Wall& wall = walls_[w];
+      const double r = p.radius[i];
+      const double gap = dot(p.position[i] - origin[w], wall.normal);
+      list.force_on_wall[e] = {};
+      if (!active[w] || gap >= r || !wall_faces(wall, origin[w], p.position[i], 0.0)) {
+        mem.clear(e);
+        continue;
+      }
+      ContactGeometry g;
+      g.normal = wall.normal;
+      g.overlap = r - gap;
+      g.arm_i = wall.normal * -(r - 0.5 * g.overlap);  // midpoint of the two deepest points (Huet et al. 2021, Fig. 2)
+      g.inv_distance = 0;                               // a plane's normal does not turn
+      const ContactMotion m{p.velocity[i], p.angular_velocity[i], wall_velocity[w], Vec3{}};
+      const ContactHistoryRef h{has_spring ? &mem.spring[e] : nullptr, has_normal ? &mem.normal_prev[e] : nullptr,
+                                has_rolling ? &mem.rolling[e] : nullptr};
+      const ContactResult res = contact_force<Model>(g, m, table_.wall(p.species[i], wall.material),
+                                                     1.0 / p.inv_mass[i], r, memory_dt, h);
+      p.force[i] += res.force_on_i;
+      p.torque[i] += res.torque_i;
+      list.force_on_wall[e] = -res.force_on_i;
+    }
+  }
+  std::fill(wall_force_.begin(), wall_force_.end(), Vec3{});
+  for (std::size_t e = 0; e < list.entries(); ++e) wall_force_[list.wall(e)] += list.force_on_wall[e];
+}
+
+}  // namespace talus

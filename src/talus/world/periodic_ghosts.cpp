@@ -1,0 +1,59 @@
+#include "talus/world/periodic_ghosts.h"
+
+namespace talus {
+
+void PeriodicGhosts::create(ParticleStore& p, const Domain& domain, const CellGrid& grid, double band,
+                            std::vector<CellCoord>& cell_of) {
+  owner_.clear();
+  shift_.clear();
+  for (int a = 0; a < 3; ++a) {
+    if (!domain.periodic[a]) continue;
+    const double length = domain.length(a);
+    const std::size_t n = p.size();  // images of earlier ghosts make the corner images
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool is_ghost = k >= p.owned;
+      const std::uint32_t origin = is_ghost ? owner_[k - p.owned] : static_cast<std::uint32_t>(k);
+      const Vec3 base_shift = is_ghost ? shift_[k - p.owned] : Vec3{};
+      for (int side = -1; side <= 1; side += 2) {
+        const double x = p.position[k][a];
+        const bool near = side > 0 ? (x - domain.lo[a] < band) : (domain.hi[a] - x < band);
+        if (!near) continue;
+        Vec3 shift = base_shift;
+        shift[a] += side * length;
+        CellCoord c = cell_of[k];
+        c[a] += side * grid.cells(a);
+        p.push_ghost(origin, shift);
+        p.position.back() = p.position[origin] + shift;
+        owner_.push_back(origin);
+        shift_.push_back(shift);
+        cell_of.push_back(c);
+      }
+    }
+  }
+}
+
+void PeriodicGhosts::update_positions(ParticleStore& p) const {
+  for (std::size_t g = 0; g < owner_.size(); ++g) {
+    const std::size_t k = p.owned + g;
+    p.position[k] = p.position[owner_[g]] + shift_[g];
+    p.orientation[k] = p.orientation[owner_[g]];
+  }
+}
+
+void PeriodicGhosts::update_velocities(ParticleStore& p) const {
+  for (std::size_t g = 0; g < owner_.size(); ++g) {
+    const std::size_t k = p.owned + g;
+    p.velocity[k] = p.velocity[owner_[g]];
+    p.angular_velocity[k] = p.angular_velocity[owner_[g]];
+  }
+}
+
+void PeriodicGhosts::fold_forces(ParticleStore& p) const {
+  for (std::size_t g = 0; g < owner_.size(); ++g) {
+    const std::size_t k = p.owned + g;
+    p.force[owner_[g]] += p.force[k];
+    p.torque[owner_[g]] += p.torque[k];
+  }
+}
+
+}  // namespace talus

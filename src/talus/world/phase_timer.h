@@ -1,0 +1,33 @@
+#pragma once
+// Wall-clock time spent in each phase of the step, for profiles and benchmarks.
+#include <array>
+#include <chrono>
+
+namespace talus {
+
+enum class Phase { integrate, neighbors, pair_forces, wall_forces, count };
+
+class PhaseTimer {
+ public:
+  using Clock = std::chrono::steady_clock;
+  void add(Phase p, Clock::duration d) { total_[static_cast<int>(p)] += d; }
+  double seconds(Phase p) const { return std::chrono::duration<double>(total_[static_cast<int>(p)]).count(); }
+  void reset() { total_.fill({}); }
+
+ private:
+  std::array<Clock::duration, static_cast<int>(Phase::count)> total_{};
+};
+
+// Adds the lifetime of a scope to one phase.
+class ScopedPhase {
+ public:
+  ScopedPhase(PhaseTimer& t, Phase p) : timer_(t), phase_(p), start_(PhaseTimer::Clock::now()) {}
+  ~ScopedPhase() { timer_.add(phase_, PhaseTimer::Clock::now() - start_); }
+
+ private:
+  PhaseTimer& timer_;
+  Phase phase_;
+  PhaseTimer::Clock::time_point start_;
+};
+
+}  // namespace talus

@@ -1,0 +1,47 @@
+#include "talus/world/wall_contacts.h"
+
+#include <cmath>
+
+namespace talus {
+
+bool wall_faces(const Wall& w, const Vec3& origin, const Vec3& x, double margin) {
+  if (!w.bounded) return true;
+  const Vec3 q = x - origin;
+  return std::abs(dot(q, w.axis_u)) <= w.half_extent_u + margin &&
+         std::abs(dot(q, w.axis_v)) <= w.half_extent_v + margin;
+}
+
+void WallContactList::build(const ParticleStore& p, const std::vector<Wall>& walls, double time, double skin,
+                            const MemoryLayout& layout) {
+  row_.assign(p.owned + 1, 0);
+  wall_.clear();
+  for (std::size_t i = 0; i < p.owned; ++i) {
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+      const Wall& wall = walls[w];
+      if (!wall.active(time)) continue;
+      const Vec3 origin = wall.origin_at(time);
+      const double d = dot(p.position[i] - origin, wall.normal);
+      if (d < p.radius[i] + skin && wall_faces(wall, origin, p.position[i], p.radius[i] + skin))
+        wall_.push_back(static_cast<std::int32_t>(w));
+    }
+    row_[i + 1] = static_cast<std::uint32_t>(wall_.size());
+  }
+  memory.resize(wall_.size(), layout);
+  force_on_wall.assign(wall_.size(), Vec3{});
+}
+
+void WallContactList::transfer_memory(const WallContactList& old, const std::vector<std::uint32_t>& old_gid,
+                                      const std::vector<std::uint32_t>& gid, std::size_t gid_limit) {
+  if (old.entries() == 0) return;
+  std::vector<std::int32_t> old_row_of(gid_limit, -1);
+  for (std::size_t i = 0; i < old.rows(); ++i) old_row_of[old_gid[i]] = static_cast<std::int32_t>(i);
+  for (std::size_t i = 0; i < rows(); ++i) {
+    const std::int32_t r = old_row_of[gid[i]];
+    if (r < 0) continue;
+    for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e)
+      for (std::uint32_t f = old.row_begin(r); f < old.row_end(r); ++f)
+        if (old.wall(f) == wall_[e] && old.memory.active(f)) memory.copy_from(old.memory, f, e, false);
+  }
+}
+
+}  // namespace talus

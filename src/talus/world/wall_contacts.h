@@ -1,0 +1,38 @@
+#pragma once
+// Candidate particle-wall contacts: for each owned particle, the walls within a skin of it,
+// with their contact memory. Rebuilt with the pair list.
+#include <cstdint>
+#include <vector>
+
+#include "talus/body/particles.h"
+#include "talus/collide/pair_list.h"
+#include "talus/world/wall.h"
+
+namespace talus {
+
+class WallContactList {
+ public:
+  void build(const ParticleStore& particles, const std::vector<Wall>& walls, double time, double skin,
+             const MemoryLayout& layout);
+  void transfer_memory(const WallContactList& old, const std::vector<std::uint32_t>& old_gid,
+                       const std::vector<std::uint32_t>& gid, std::size_t gid_limit);
+
+  std::uint32_t row_begin(std::size_t i) const { return row_[i]; }
+  std::uint32_t row_end(std::size_t i) const { return row_[i + 1]; }
+  std::int32_t wall(std::size_t e) const { return wall_[e]; }
+  std::size_t entries() const { return wall_.size(); }
+  std::size_t rows() const { return row_.empty() ? 0 : row_.size() - 1; }
+
+  ContactMemory memory;
+  std::vector<Vec3> force_on_wall;  ///< N, per entry, filled by the force pass
+
+ private:
+  std::vector<std::uint32_t> row_;
+  std::vector<std::int32_t> wall_;
+};
+
+// Distance from a sphere's centre to a wall along the wall normal, and whether the centre
+// projects inside a bounded wall (with `margin` of slack).
+bool wall_faces(const Wall& wall, const Vec3& origin, const Vec3& x, double margin);
+
+}  // namespace talus

@@ -1,0 +1,187 @@
+#include "talus/world/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "talus/integrate/velocity_verlet.h"
+
+namespace talus {
+
+World::World(const WorldSettings& settings) : settings_(settings) {}
+
+std::uint32_t World::add_particle(const ParticleInit& init) {
+  if (!(init.radius > 0)) throw std::invalid_argument("particle radius must be positive");
+  if (!(init.mass > 0)) throw std::invalid_argument("particle mass must be positive");
+  particles_.drop_ghosts();
+  const std::size_t n = particles_.owned;
+  particles_.resize(n + 1);
+  particles_.owned = n + 1;
+  particles_.position[n] = init.position;
+  particles_.velocity[n] = init.fixed ? Vec3{} : init.velocity;
+  particles_.angular_velocity[n] = init.fixed ? Vec3{} : init.angular_velocity;
+  particles_.force[n] = {};
+  particles_.torque[n] = {};
+  particles_.orientation[n] = init.orientation;
+  particles_.radius[n] = init.radius;
+  particles_.mass[n] = init.mass;
+  particles_.inv_mass[n] = init.fixed ? 0.0 : 1.0 / init.mass;
+  particles_.inv_inertia[n] = init.fixed ? Vec3{} : Vec3{1 / init.inertia.x, 1 / init.inertia.y, 1 / init.inertia.z};
+  particles_.species[n] = init.species;
+  particles_.shape[n] = init.shape;
+  particles_.gid[n] = next_gid_;
+  invalidate();
+  return next_gid_++;
+}
+
+std::uint32_t World::add_sphere(const Vec3& position, double radius, double density, int species, bool fixed) {
+  ParticleInit init;
+  init.position = position;
+  init.radius = radius;
+  init.mass = density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  const double i = 0.4 * init.mass * radius * radius;
+  init.inertia = {i, i, i};
+  init.species = species;
+  init.fixed = fixed;
+  return add_particle(init);
+}
+
+int World::add_wall(const Wall& wall) {
+  walls_.push_back(wall);
+  invalidate();
+  return static_cast<int>(walls_.size()) - 1;
+}
+
+double World::interaction_range() const {
+  double r_max = 0;
+  for (std::size_t i = 0; i < particles_.owned; ++i) r_max = std::max(r_max, particles_.radius[i]);
+  return 2 * r_max + skin_;
+}
+
+MemoryLayout World::memory_layout() const {
+  MemoryLayout m;
+  const bool rolling = table_.any_rolling();
+  m.spring = settings_.tangential_model != TangentialModel::memoryless;
+  m.normal_prev = settings_.tangential_model != TangentialModel::elastic_spring || rolling;
+  m.rolling = rolling && settings_.tangential_model != TangentialModel::memoryless;
+  return m;
+}
+
+void World::prepare() {
+  if (table_.species() == 0) throw std::logic_error("contact parameters are not set");
+  double r_max = 0;
+  for (std::size_t i = 0; i < particles_.owned; ++i) {
+    r_max = std::max(r_max, particles_.radius[i]);
+    if (particles_.species[i] < 0 || particles_.species[i] >= table_.species())
+      throw std::logic_error("particle species without contact parameters");
+  }
+  skin_ = settings_.skin > 0 ? settings_.skin : 0.2 * r_max;
+  wall_force_.assign(walls_.size(), Vec3{});
+  rebuild();
+  compute_forces(0.0);  // forces at t0; memories do not advance
+  ready_ = true;
+}
+
+bool World::needs_rebuild() const {
+  if (2 * max_displacement_ > skin_) return true;
+  double wall_move = 0;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if (static_cast<char>(walls_[w].active(time_)) != wall_active_at_build_[w]) return true;
+    wall_move = std::max(wall_move, norm(walls_[w].origin_at(time_) - wall_origin_at_build_[w]));
+  }
+  return max_displacement_ + wall_move > skin_;
+}
+
+void World::rebuild() {
+  ScopedPhase phase(timer_, Phase::neighbors);
+  ParticleStore& p = particles_;
+  p.drop_ghosts();
+  const Domain& domain = settings_.domain;
+  for (std::size_t i = 0; i < p.owned; ++i) p.position[i] = domain.wrap(p.position[i]);
+
+  const double range = interaction_range();
+  for (int a = 0; a < 3; ++a)
+    if (domain.periodic[a] && domain.length(a) < 2 * range)
+      throw std::runtime_error("periodic box narrower than twice the interaction range");
+  grid_.setup(domain, p.position, p.owned, range);
+
+  // Sort owned particles by cell, slab axis slowest: slabs become contiguous and neighbours close in memory.
+  std::vector<CellCoord> cell_of(p.owned);
+  std::vector<std::int64_t> key(p.owned);
+  for (std::size_t i = 0; i < p.owned; ++i) {
+    cell_of[i] = grid_.coord_of(p.position[i]);
+    key[i] = grid_.linear(cell_of[i]);
+  }
+  std::vector<std::uint32_t> order(p.owned);
+  for (std::size_t i = 0; i < p.owned; ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+
+  p.permute_owned(order);
+  {
+    std::vector<CellCoord> sorted(p.owned);
+    for (std::size_t k = 0; k < p.owned; ++k) sorted[k] = cell_of[order[k]];
+    cell_of.swap(sorted);
+  }
+  ghosts_.create(p, domain, grid_, range, cell_of);
+  grid_.bin(cell_of);
+
+  const MemoryLayout layout = memory_layout();
+  PairList old_pairs = std::move(pairs_);
+  pairs_ = PairList{};
+  pairs_.build(p, cell_of, grid_, skin_, layout);
+  pairs_.transfer_memory(old_pairs, gid_at_build_, p.gid, next_gid_);
+
+  WallContactList old_walls = std::move(wall_pairs_);
+  wall_pairs_ = WallContactList{};
+  wall_pairs_.build(p, walls_, time_, skin_, layout);
+  wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_);
+  gid_at_build_ = p.gid;  // owned and ghost ids of this build, for the next transfer
+
+  position_at_build_.assign(p.position.begin(), p.position.begin() + p.owned);
+  wall_origin_at_build_.resize(walls_.size());
+  wall_active_at_build_.resize(walls_.size());
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    wall_origin_at_build_[w] = walls_[w].origin_at(time_);
+    wall_active_at_build_[w] = walls_[w].active(time_);
+  }
+  max_displacement_ = 0;
+  ++rebuilds_;
+}
+
+void World::step() {
+  if (!ready_) prepare();
+  const double dt = settings_.time_step;
+  {
+    ScopedPhase phase(timer_, Phase::integrate);
+    kick(particles_, 0.5 * dt, settings_.gravity);
+    max_displacement_ = std::sqrt(drift(particles_, dt, position_at_build_));
+  }
+  time_ += dt;
+  if (needs_rebuild()) {
+    rebuild();
+  } else {
+    ghosts_.update_positions(particles_);
+  }
+  ghosts_.update_velocities(particles_);
+  compute_forces(dt);
+  {
+    ScopedPhase phase(timer_, Phase::integrate);
+    kick(particles_, 0.5 * dt, settings_.gravity);
+  }
+  ++steps_;
+}
+
+std::vector<std::int32_t> World::index_of_gid() const {
+  std::vector<std::int32_t> index(next_gid_, -1);
+  for (std::size_t i = 0; i < particles_.owned; ++i) index[particles_.gid[i]] = static_cast<std::int32_t>(i);
+  return index;
+}
+
+std::size_t World::memory_bytes() const {
+  const ParticleStore& p = particles_;
+  const std::size_t per_particle = 6 * sizeof(Vec3) + sizeof(Quat) + 3 * sizeof(double) + 3 * 4;
+  return p.position.capacity() * per_particle + pairs_.bytes() + position_at_build_.capacity() * sizeof(Vec3);
+}
+
+}  // namespace talus

@@ -1,0 +1,148 @@
+#pragma once
+// The simulated system and its time step. World::step() reads as the pipeline:
+// kick, drift, (rebuild | refresh ghosts), contact forces, kick.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "talus/analysis/snapshot.h"
+#include "talus/body/particles.h"
+#include "talus/collide/cell_grid.h"
+#include "talus/collide/pair_list.h"
+#include "talus/contact/contact_law.h"
+#include "talus/contact/contact_table.h"
+#include "talus/world/domain.h"
+#include "talus/world/periodic_ghosts.h"
+#include "talus/world/phase_timer.h"
+#include "talus/world/wall.h"
+#include "talus/world/wall_contacts.h"
+
+namespace talus {
+
+struct WorldSettings {
+  Domain domain;
+  Vec3 gravity{0, 0, -9.81};              ///< m/s^2; a tilted chute is tilted gravity
+  double time_step = 1e-5;                ///< s
+  double skin = 0;                        ///< m, neighbour-list skin; 0 picks 10 % of the largest diameter
+  TangentialModel tangential_model = TangentialModel::memory;
+};
+
+struct ParticleInit {
+  Vec3 position, velocity, angular_velocity;
+  Quat orientation;
+  double radius = 0;   ///< m, bounding radius
+  double mass = 0;     ///< kg
+  Vec3 inertia;        ///< kg m^2, principal moments
+  int species = 0;
+  int shape = 0;
+  bool fixed = false;
+};
+
+// What the run reports at each output step.
+struct Diagnostics {
+  double time = 0;
+  double kinetic_translational = 0;  ///< J
+  double kinetic_rotational = 0;     ///< J
+  double elastic_normal = 0;         ///< J, sum of k_n delta_n^2 / 2
+  double elastic_tangential = 0;     ///< J, sum of k_t |delta_t|^2 / 2
+  double elastic_rolling = 0;        ///< J, sum of |M_k|^2 / (2 k_r)
+  double gravitational = 0;          ///< J, -sum m g.x over mobile particles
+  std::size_t contacts = 0;          ///< particle-particle contacts
+  std::size_t wall_contacts = 0;
+  double max_overlap_ratio = 0;      ///< largest delta_n / radius
+  double max_speed = 0;              ///< m/s, largest translational speed
+  double mean_speed = 0;             ///< m/s
+  double max_angular_speed = 0;      ///< rad/s
+
+  double elastic() const { return elastic_normal + elastic_tangential + elastic_rolling; }
+  double kinetic() const { return kinetic_translational + kinetic_rotational; }
+};
+
+class World {
+ public:
+  explicit World(const WorldSettings& settings);
+
+  // Setting up. Contact parameters must be set for every species (and wall material) in use.
+  std::uint32_t add_particle(const ParticleInit& init);
+  std::uint32_t add_sphere(const Vec3& position, double radius, double density, int species, bool fixed = false);
+  int add_wall(const Wall& wall);
+  ContactTable& contacts() { return table_; }
+  const ContactTable& contacts() const { return table_; }
+
+  void step();
+  void run(std::uint64_t steps) { for (std::uint64_t k = 0; k < steps; ++k) step(); }
+
+  double time() const { return time_; }
+  void set_time(double t) { time_ = t; }
+  std::uint64_t step_count() const { return steps_; }
+  const WorldSettings& settings() const { return settings_; }
+  void set_gravity(const Vec3& g) { settings_.gravity = g; }
+  const ParticleStore& particles() const { return particles_; }
+  ParticleStore& particles_mutable() { invalidate(); return particles_; }
+  const std::vector<Wall>& walls() const { return walls_; }
+  std::vector<Wall>& walls_mutable() { invalidate(); return walls_; }
+  Vec3 wall_force(std::size_t wall) const { return wall_force_[wall]; }  ///< N, total force of particles on the wall
+  std::size_t owned_count() const { return particles_.owned; }
+  std::size_t pair_entries() const { return pairs_.entries(); }
+  std::uint64_t rebuilds() const { return rebuilds_; }
+  std::size_t memory_bytes() const;
+  const PhaseTimer& timer() const { return timer_; }
+
+  Diagnostics diagnostics() const;
+  Snapshot snapshot() const;  ///< particles in global id order, contacts with their forces
+  // Owned index of each global id (-1 if absent); valid until the next rebuild.
+  std::vector<std::int32_t> index_of_gid() const;
+
+  // Drops every particle for which `remove(index)` is true.
+  template <class Pred>
+  void remove_particles_if(Pred remove);
+
+ private:
+  void invalidate() { ready_ = false; }
+  void prepare();
+  void rebuild();
+  bool needs_rebuild() const;
+  void compute_forces(double memory_dt);
+  template <TangentialModel Model> void pair_forces(double memory_dt);
+  template <TangentialModel Model> void wall_forces(double memory_dt);
+  double interaction_range() const;
+  MemoryLayout memory_layout() const;
+
+  WorldSettings settings_;
+  ParticleStore particles_;
+  std::vector<Wall> walls_;
+  std::vector<Vec3> wall_force_;
+  ContactTable table_;
+  CellGrid grid_;
+  PairList pairs_;
+  WallContactList wall_pairs_;
+  PeriodicGhosts ghosts_;
+  std::vector<Vec3> position_at_build_;
+  std::vector<std::uint32_t> gid_at_build_;
+  std::vector<Vec3> wall_origin_at_build_;
+  std::vector<char> wall_active_at_build_;
+  double skin_ = 0;
+  double time_ = 0;
+  std::uint64_t steps_ = 0;
+  std::uint64_t rebuilds_ = 0;
+  std::uint32_t next_gid_ = 0;
+  double max_displacement_ = 0;  ///< m, since the last rebuild
+  bool ready_ = false;
+  PhaseTimer timer_;
+};
+
+template <class Pred>
+void World::remove_particles_if(Pred remove) {
+  particles_.drop_ghosts();
+  std::vector<std::uint32_t> keep;
+  for (std::size_t i = 0; i < particles_.owned; ++i)
+    if (!remove(i)) keep.push_back(static_cast<std::uint32_t>(i));
+  particles_.permute_owned(keep);
+  particles_.owned = keep.size();
+  particles_.resize(keep.size());
+  pairs_ = PairList{};
+  wall_pairs_ = WallContactList{};
+  invalidate();
+}
+
+}  // namespace talus
