@@ -84,6 +84,7 @@ class World {
   Vec3 wall_force(std::size_t wall) const { return wall_force_[wall]; }  ///< N, total force of particles on the wall
   std::size_t owned_count() const { return particles_.owned; }
   std::size_t pair_entries() const { return pairs_.entries(); }
+  const PairList& pair_list() const { return pairs_; }
   std::uint64_t rebuilds() const { return rebuilds_; }
   std::size_t memory_bytes() const;
   const PhaseTimer& timer() const { return timer_; }

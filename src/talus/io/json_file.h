@@ -1,0 +1,14 @@
+#pragma once
+// summary.json and other JSON results, written atomically (see atomic_file.h).
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+namespace talus::io {
+
+// Pretty-printed with `indent` spaces and a final newline. Doubles are printed in the
+// shortest form that reads back to the same bits (nlohmann's Grisu2, e.g. 0.1 -> 0.1);
+// NaN and infinities have no JSON form and become null. Invalid UTF-8 in strings is
+// replaced by U+FFFD rather than failing at the end of a long run.
+void write_json(const std::filesystem::path& path, const nlohmann::json& value, int indent = 2);
+
+}  // namespace talus::io
