@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace talus {
 
@@ -57,17 +59,22 @@ void SphereOverlapIndex::insert(const Sphere& s) {
 }
 
 double insert_growing(SphereOverlapIndex& index, std::size_t count, const Vec3& lo, const Vec3& size, double growth,
-                      const std::function<double(std::mt19937_64&)>& radius, std::mt19937_64& rng) {
+                      const std::function<double(std::mt19937_64&)>& radius, std::mt19937_64& rng, double max_top,
+                      std::size_t max_attempts) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   double top = size.z;
-  std::size_t placed = 0;
+  std::size_t placed = 0, failures = 0;
   while (placed < count) {
     const double r = radius(rng);
     const Sphere s{{lo.x + size.x * unit(rng), lo.y + size.y * unit(rng), lo.z + top * unit(rng)}, r};
     if (index.overlaps(s)) {
       top += growth;
+      if (top > max_top || (growth == 0 && ++failures > max_attempts))
+        throw std::runtime_error("insertion region full after " + std::to_string(placed) + " of " +
+                                 std::to_string(count) + " particles");
       continue;
     }
+    failures = 0;
     index.insert(s);
     ++placed;
   }

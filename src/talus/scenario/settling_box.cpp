@@ -57,8 +57,8 @@ std::unique_ptr<World> build_settling_box(const SettlingBoxSetup& s) {
   SphereOverlapIndex index({0, 0, 0}, s.box, closed, 2 * s.radius);
   const Vec3 margin{s.radius, s.radius, s.radius};
   const Vec3 region = s.box - 2.0 * margin;
-  insert_growing(index, s.count, margin, {region.x, region.y, 0.3 * region.z}, 0.0, [&](std::mt19937_64&) { return s.radius; },
-                 rng);
+  insert_growing(index, s.count, margin, {region.x, region.y, 0.3 * region.z}, 1e-3 * s.radius,
+                 [&](std::mt19937_64&) { return s.radius; }, rng, region.z);
   for (const Sphere& sp : index.spheres()) world->add_sphere(sp.centre, sp.radius, s.density, 0);
   return world;
 }

@@ -1,0 +1,154 @@
+#include "talus/scenario/run_loop.h"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+
+#include "talus/io/atomic_file.h"
+#include "talus/io/csv_writer.h"
+#include "talus/io/json_file.h"
+#include "talus/io/results_dir.h"
+
+namespace talus {
+
+namespace {
+
+volatile std::sig_atomic_t g_stop_requested = 0;
+extern "C" void request_stop(int) { g_stop_requested = 1; }
+
+std::vector<std::string> timeseries_columns(const World& world) {
+  std::vector<std::string> c = {"time", "step", "kinetic_translational", "kinetic_rotational", "elastic_normal",
+                                "elastic_tangential", "elastic_rolling", "gravitational", "kinetic_over_elastic",
+                                "contacts", "wall_contacts", "max_overlap_ratio", "max_speed", "mean_speed",
+                                "max_angular_speed"};
+  for (const Wall& w : world.walls()) {
+    c.push_back("force_" + w.name + "_x");
+    c.push_back("force_" + w.name + "_y");
+    c.push_back("force_" + w.name + "_z");
+  }
+  return c;
+}
+
+void write_row(io::CsvWriter& csv, const World& world, const Diagnostics& d) {
+  std::vector<double> row = {d.time, static_cast<double>(world.step_count()), d.kinetic_translational,
+                             d.kinetic_rotational, d.elastic_normal, d.elastic_tangential, d.elastic_rolling,
+                             d.gravitational, d.elastic() > 0 ? d.kinetic() / d.elastic() : 0.0,
+                             static_cast<double>(d.contacts), static_cast<double>(d.wall_contacts),
+                             d.max_overlap_ratio, d.max_speed, d.mean_speed, d.max_angular_speed};
+  for (std::size_t w = 0; w < world.walls().size(); ++w) {
+    const Vec3 f = world.wall_force(w);
+    row.insert(row.end(), {f.x, f.y, f.z});
+  }
+  csv.row(std::span<const double>(row));
+}
+
+nlohmann::json diagnostics_json(const Diagnostics& d) {
+  return {{"kinetic_translational", d.kinetic_translational}, {"kinetic_rotational", d.kinetic_rotational},
+          {"elastic_normal", d.elastic_normal},               {"elastic_tangential", d.elastic_tangential},
+          {"elastic_rolling", d.elastic_rolling},             {"gravitational", d.gravitational},
+          {"max_overlap_ratio", d.max_overlap_ratio},         {"max_speed", d.max_speed},
+          {"mean_speed", d.mean_speed},                       {"max_angular_speed", d.max_angular_speed}};
+}
+
+class Progress {
+ public:
+  explicit Progress(bool quiet) : quiet_(quiet), tty_(isatty(STDERR_FILENO)), start_(Clock::now()), last_(start_) {}
+  void update(const World& w, double end_time, bool force = false) {
+    if (quiet_) return;
+    const auto now = Clock::now();
+    const double since = std::chrono::duration<double>(now - last_).count();
+    if (!force && since < (tty_ ? 0.5 : 10.0)) return;
+    last_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double rate = elapsed > 0 ? w.step_count() / elapsed : 0;
+    const double fraction = std::min(1.0, w.time() / end_time);
+    const double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
+    std::fprintf(stderr, "%st = %.6g s (%5.1f %%)  %.0f steps/s  %zu particles  %zu contacts  ETA %.0f s%s",
+                 tty_ ? "\r" : "", w.time(), 100 * fraction, rate, w.owned_count(), w.diagnostics().contacts, eta,
+                 tty_ ? "   " : "\n");
+    std::fflush(stderr);
+  }
+  void finish() {
+    if (!quiet_ && tty_) std::fputc('\n', stderr);
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool quiet_, tty_;
+  Clock::time_point start_, last_;
+};
+
+}  // namespace
+
+void install_stop_handlers() {
+  std::signal(SIGINT, request_stop);
+  std::signal(SIGTERM, request_stop);
+}
+
+RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
+  if (opt.threads > 0) omp_set_num_threads(opt.threads);
+  io::prepare_results_dir(opt.out, opt.overwrite);
+  io::atomic_write(opt.out / "scenario.toml", opt.scenario_toml);
+  World& world = *sc.world;
+  const RunControl& run = sc.control;
+  io::CsvWriter csv(opt.out / "timeseries.csv", timeseries_columns(world));
+  Progress progress(opt.quiet);
+  const auto start = std::chrono::steady_clock::now();
+
+  RunOutcome outcome{"end_time", 0};
+  write_row(csv, world, world.diagnostics());
+  double next_output = world.time() + run.output_interval;
+  const double dt = world.settings().time_step;
+  while (world.time() < run.end_time - 0.5 * dt) {
+    world.step();
+    if (world.time() >= next_output - 0.5 * dt) {
+      next_output += run.output_interval;
+      const Diagnostics d = world.diagnostics();
+      write_row(csv, world, d);
+      if (run.stop_kinetic_energy && world.time() >= run.stop_min_time && d.kinetic() < *run.stop_kinetic_energy) {
+        outcome.stop_reason = "kinetic_energy";
+        break;
+      }
+    }
+    if (g_stop_requested) {
+      outcome.stop_reason = "interrupted";
+      break;
+    }
+    progress.update(world, run.end_time);
+  }
+  progress.update(world, run.end_time, true);
+  progress.finish();
+  const Diagnostics d = world.diagnostics();
+  write_row(csv, world, d);
+  csv.close();
+  outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  nlohmann::json summary;
+  summary["talus_version"] = TALUS_VERSION;
+  summary["stop_reason"] = outcome.stop_reason;
+  summary["final_time"] = world.time();
+  summary["steps"] = world.step_count();
+  summary["time_step"] = dt;
+  summary["particles"] = world.owned_count();
+  summary["contacts"] = d.contacts;
+  summary["wall_contacts"] = d.wall_contacts;
+  summary["energies"] = diagnostics_json(d);
+  summary["wall_time"] = outcome.wall_seconds;
+  summary["steps_per_second"] = outcome.wall_seconds > 0 ? world.step_count() / outcome.wall_seconds : 0.0;
+  summary["threads"] = omp_get_max_threads();
+  summary["neighbour_rebuilds"] = world.rebuilds();
+  summary["derived"] = sc.derived;
+  nlohmann::json walls = nlohmann::json::object();
+  for (std::size_t w = 0; w < world.walls().size(); ++w) {
+    const Vec3 f = world.wall_force(w);
+    walls[world.walls()[w].name] = {f.x, f.y, f.z};
+  }
+  summary["wall_forces"] = walls;
+  io::write_json(opt.out / "summary.json", summary);
+  return outcome;
+}
+
+}  // namespace talus

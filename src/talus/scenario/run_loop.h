@@ -1,0 +1,29 @@
+#pragma once
+// Runs a loaded scenario to its end and writes the results folder: a copy of the scenario,
+// summary.json and timeseries.csv, all written atomically.
+#include <filesystem>
+#include <string>
+
+#include "talus/scenario/scenario.h"
+
+namespace talus {
+
+struct RunOptions {
+  std::filesystem::path out;          ///< results folder
+  bool overwrite = false;             ///< allow a non-empty results folder
+  bool quiet = false;                 ///< no progress output
+  int threads = 0;                    ///< 0: OpenMP default
+  std::string scenario_toml;          ///< the final scenario text, copied into the folder
+};
+
+struct RunOutcome {
+  std::string stop_reason;  ///< "end_time", "kinetic_energy", "interrupted"
+  double wall_seconds = 0;
+};
+
+RunOutcome run_scenario(Scenario& scenario, const RunOptions& options);
+
+// Set by SIGINT/SIGTERM: the run stops at the end of the current step and writes its results.
+void install_stop_handlers();
+
+}  // namespace talus

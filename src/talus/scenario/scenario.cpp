@@ -1,0 +1,320 @@
+#include "talus/scenario/scenario.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "talus/contact/parameter_procedure.h"
+#include "talus/scenario/chute.h"
+#include "talus/scenario/contact_reader.h"
+#include "talus/scenario/insertion.h"
+
+namespace talus {
+
+namespace {
+
+using io::ScenarioFile;
+
+constexpr double kPi = std::numbers::pi;
+
+struct SpeciesInfo {
+  std::string name;
+  double density = 0;  ///< kg/m^3
+  double radius = 0;   ///< m, nominal
+  double mass() const { return density * 4.0 / 3.0 * kPi * radius * radius * radius; }
+  double inertia() const { return 0.4 * mass() * radius * radius; }
+};
+
+std::string indexed(const std::string& array, std::size_t k) { return array + "[" + std::to_string(k) + "]"; }
+
+TangentialModel read_model(const ScenarioFile& f) {
+  const std::string m = f.get_choice_or("contact.model", "memory", {"memory", "memoryless", "elastic_spring"});
+  if (m == "memoryless") return TangentialModel::memoryless;
+  if (m == "elastic_spring") return TangentialModel::elastic_spring;
+  return TangentialModel::memory;
+}
+
+Domain read_domain(const ScenarioFile& f) {
+  Domain d;
+  d.lo = f.get<Vec3>("domain.lo");
+  d.hi = f.get<Vec3>("domain.hi");
+  for (int a = 0; a < 3; ++a)
+    if (!(d.hi[a] > d.lo[a])) f.fail("domain.hi", "must exceed domain.lo on every axis");
+  const std::string periodic = f.get_or<std::string>("domain.periodic", "");
+  for (char c : periodic) {
+    if (c < 'x' || c > 'z') f.fail("domain.periodic", "expected a subset of \"xyz\", got \"" + periodic + "\"");
+    d.periodic[c - 'x'] = true;
+  }
+  return d;
+}
+
+WallMotion read_motion(const ScenarioFile& f, const std::string& key) {
+  WallMotion m;
+  if (!f.has(key)) return m;
+  const std::string kind = f.get_choice(key + ".kind", {"fixed", "removed", "accelerated"});
+  m.start_time = f.get_or<double>(key + ".start_time", 0.0, io::non_negative);
+  if (kind == "removed") m.kind = WallMotion::Kind::removed;
+  if (kind == "accelerated") {
+    m.kind = WallMotion::Kind::accelerated;
+    m.direction = normalized_or_zero(f.get<Vec3>(key + ".direction"));
+    if (norm2(m.direction) == 0) f.fail(key + ".direction", "must not be zero");
+    m.acceleration = f.get<double>(key + ".acceleration", io::positive);
+    m.top_speed = f.get<double>(key + ".top_speed", io::positive);
+  }
+  return m;
+}
+
+int material_index(std::vector<std::string>& materials, const std::string& name) {
+  auto it = std::find(materials.begin(), materials.end(), name);
+  if (it != materials.end()) return static_cast<int>(it - materials.begin());
+  materials.push_back(name);
+  return static_cast<int>(materials.size()) - 1;
+}
+
+void read_walls(const ScenarioFile& f, World& world, std::vector<std::string>& materials) {
+  if (f.has("box")) {
+    const Vec3 lo = f.get<Vec3>("box.lo"), hi = f.get<Vec3>("box.hi");
+    for (int a = 0; a < 3; ++a)
+      if (!(hi[a] > lo[a])) f.fail("box.hi", "must exceed box.lo on every axis");
+    const int material = material_index(materials, f.get_or<std::string>("box.material", "wall"));
+    const bool open_top = f.get_or<bool>("box.open_top", false);
+    const char* names[6] = {"x-", "x+", "y-", "y+", "floor", "top"};
+    for (int k = 0; k < 6; ++k) {
+      if (k == 5 && open_top) continue;
+      Wall w;
+      w.name = names[k];
+      const int axis = k / 2;
+      w.normal[axis] = (k % 2 == 0) ? 1 : -1;
+      w.origin[axis] = (k % 2 == 0) ? lo[axis] : hi[axis];
+      w.material = material;
+      world.add_wall(w);
+    }
+  }
+  const std::size_t n = f.array_size("walls");
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::string key = indexed("walls", k);
+    Wall w;
+    w.name = f.get_or<std::string>(key + ".name", "wall" + std::to_string(k));
+    w.origin = f.get<Vec3>(key + ".point");
+    w.normal = normalized_or_zero(f.get<Vec3>(key + ".normal"));
+    if (norm2(w.normal) == 0) f.fail(key + ".normal", "must not be zero");
+    w.material = material_index(materials, f.get_or<std::string>(key + ".material", "wall"));
+    if (f.has(key + ".half_extents")) {
+      const std::vector<double> h = f.get<std::vector<double>>(key + ".half_extents", io::positive);
+      if (h.size() != 2) f.fail(key + ".half_extents", "expected two half extents [along axis_u, along the other in-plane axis]");
+      w.bounded = true;
+      w.axis_u = f.get<Vec3>(key + ".axis_u");
+      w.axis_u = normalized_or_zero(w.axis_u - dot(w.axis_u, w.normal) * w.normal);
+      if (norm2(w.axis_u) == 0) f.fail(key + ".axis_u", "must not be parallel to the normal");
+      w.axis_v = cross(w.normal, w.axis_u);
+      w.half_extent_u = h[0];
+      w.half_extent_v = h[1];
+    }
+    w.motion = read_motion(f, key + ".motion");
+    world.add_wall(w);
+  }
+}
+
+}  // namespace
+
+Scenario load_scenario(ScenarioFile& f) {
+  Scenario sc;
+  RunControl& run = sc.control;
+  run.end_time = f.get<double>("run.end_time", io::positive);
+  run.output_interval = f.get_or<double>("run.output_interval", run.end_time / 100, io::positive);
+  run.seed = static_cast<std::uint64_t>(f.get_or<std::int64_t>("run.seed", 1, io::non_negative));
+  if (f.has("run.stop_kinetic_energy")) run.stop_kinetic_energy = f.get<double>("run.stop_kinetic_energy", io::positive);
+  run.stop_min_time = f.get_or<double>("run.stop_min_time", 0.0, io::non_negative);
+  const double steps_per_contact = f.get_or<double>("run.steps_per_contact", 50, io::in_range(10, 1e9));
+
+  WorldSettings ws;
+  ws.tangential_model = read_model(f);
+
+  // Species.
+  std::vector<SpeciesInfo> species;
+  const bool chute = f.has("chute");
+  if (chute) {
+    species.push_back({"flow", 6 / kPi, 0.5});
+    species.push_back({"base", 6 / kPi, 0.5});
+  }
+  for (const std::string& name : f.table_keys("species")) {
+    const std::string key = "species." + name;
+    species.push_back({name, f.get<double>(key + ".density", io::positive), f.get<double>(key + ".radius", io::positive)});
+  }
+  if (species.empty()) f.fail("species", "define at least one species, e.g. [species.glass] density = 2500, radius = 0.001");
+  auto species_index = [&](const std::string& key) {
+    const std::string name = f.get<std::string>(key);
+    for (std::size_t s = 0; s < species.size(); ++s)
+      if (species[s].name == name) return static_cast<int>(s);
+    f.fail(key, "unknown species \"" + name + "\"");
+  };
+
+  std::unique_ptr<World> world;
+  ChuteSetup chute_setup;
+  if (chute) {
+    chute_setup.length = f.get_or<double>("chute.length", 20, io::positive);
+    chute_setup.width = f.get_or<double>("chute.width", 10, io::positive);
+    chute_setup.base_diameter = f.get_or<double>("chute.base_diameter", 1, io::non_negative);
+    chute_setup.fill_height = f.get_or<double>("chute.fill_height", 20, io::positive);
+    chute_setup.angle_deg = f.get_or<double>("chute.angle", 24, io::in_range(0, 89));
+    chute_setup.seed = run.seed;
+    chute_setup.model = ws.tangential_model;
+  } else {
+    ws.domain = read_domain(f);
+    ws.gravity = f.get_or<Vec3>("domain.gravity", Vec3{0, 0, -9.81});
+  }
+
+  // Contact parameters for every pair of species and every wall material.
+  std::vector<std::string> materials;
+  if (!chute) {
+    // Walls first: they name the materials.
+    World probe(ws);
+    read_walls(f, probe, materials);
+  }
+  if (materials.empty()) materials.push_back("wall");
+  ContactTable table;
+  table.resize(static_cast<int>(species.size()), static_cast<int>(materials.size()));
+  const std::size_t pair_overrides = f.array_size("contact.pair");
+  for (std::size_t a = 0; a < species.size(); ++a)
+    for (std::size_t b = a; b < species.size(); ++b) {
+      std::vector<std::string> tables = {"contact"};
+      for (std::size_t k = 0; k < pair_overrides; ++k) {
+        const std::string key = indexed("contact.pair", k);
+        const std::vector<std::string> names = {f.get<std::string>(key + ".species[0]"), f.get<std::string>(key + ".species[1]")};
+        if ((names[0] == species[a].name && names[1] == species[b].name) ||
+            (names[1] == species[a].name && names[0] == species[b].name))
+          tables.insert(tables.begin(), key);
+      }
+      ContactContext ctx{species[a].mass() * species[b].mass() / (species[a].mass() + species[b].mass()),
+                         species[a].radius, species[a].inertia(), species[b].radius, species[b].inertia()};
+      table.set_pair(static_cast<int>(a), static_cast<int>(b), read_contact(f, tables, ctx));
+    }
+  for (std::size_t a = 0; a < species.size(); ++a)
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+      ContactContext ctx{species[a].mass(), species[a].radius, species[a].inertia(), 0, 0};
+      table.set_wall(static_cast<int>(a), static_cast<int>(m), read_contact(f, {"contact.wall", "contact"}, ctx));
+    }
+
+  // Time step: given, or t_c / steps_per_contact; never above t_c / 10.
+  double tc_min = 1e300;
+  for (std::size_t a = 0; a < species.size(); ++a) {
+    for (std::size_t b = a; b < species.size(); ++b) {
+      const double m = species[a].mass() * species[b].mass() / (species[a].mass() + species[b].mass());
+      const ContactParams& c = table.pair(static_cast<int>(a), static_cast<int>(b));
+      tc_min = std::min(tc_min, params::collision_time(c.normal_stiffness, c.normal_damping.at(m), m));
+    }
+    for (std::size_t mt = 0; mt < materials.size(); ++mt) {
+      const double m = species[a].mass();
+      const ContactParams& c = table.wall(static_cast<int>(a), static_cast<int>(mt));
+      tc_min = std::min(tc_min, params::collision_time(c.normal_stiffness, c.normal_damping.at(m), m));
+    }
+  }
+  ws.time_step = f.get_or<double>("run.time_step", tc_min / steps_per_contact, io::positive);
+  if (ws.time_step > tc_min / 10)
+    f.fail("run.time_step", "above t_c/10 = " + std::to_string(tc_min / 10) + " s (shortest contact time t_c = " +
+                                std::to_string(tc_min) + " s)");
+  sc.derived["contact_time"] = tc_min;
+  sc.derived["time_step"] = ws.time_step;
+  sc.derived["steps_per_contact"] = tc_min / ws.time_step;
+
+  if (chute) {
+    chute_setup.flow = table.pair(0, 0);
+    chute_setup.base = table.pair(0, 1);
+    chute_setup.time_step = ws.time_step;
+    world = build_chute(chute_setup);
+  } else {
+    world = std::make_unique<World>(ws);
+    std::vector<std::string> unused;
+    read_walls(f, *world, materials);
+  }
+  world->contacts() = table;
+
+  // Particles: explicit, then random insertion regions.
+  const Domain& domain = world->settings().domain;
+  const double cell = 2 * std::max_element(species.begin(), species.end(), [](auto& a, auto& b) {
+                        return a.radius < b.radius;
+                      })->radius;
+  SphereOverlapIndex index(domain.lo, domain.hi, domain.periodic, cell);
+  for (std::size_t i = 0; i < world->particles().owned; ++i)
+    index.insert({world->particles().position[i], world->particles().radius[i]});
+  auto inside = [&](const Vec3& x) {
+    for (int a = 0; a < 3; ++a)
+      if (!domain.periodic[a] && (x[a] < domain.lo[a] || x[a] > domain.hi[a])) return false;
+    return true;
+  };
+  const std::size_t explicit_count = f.array_size("particles");
+  for (std::size_t k = 0; k < explicit_count; ++k) {
+    const std::string key = indexed("particles", k);
+    const int s = species_index(key + ".species");
+    ParticleInit p;
+    p.species = s;
+    p.position = f.get<Vec3>(key + ".position");
+    if (!inside(p.position)) f.fail(key + ".position", "outside the domain");
+    p.velocity = f.get_or<Vec3>(key + ".velocity", Vec3{});
+    p.angular_velocity = f.get_or<Vec3>(key + ".angular_velocity", Vec3{});
+    p.radius = f.get_or<double>(key + ".radius", species[s].radius, io::positive);
+    p.fixed = f.get_or<bool>(key + ".fixed", false);
+    p.mass = species[s].density * 4.0 / 3.0 * kPi * p.radius * p.radius * p.radius;
+    const double inertia = 0.4 * p.mass * p.radius * p.radius;
+    p.inertia = {inertia, inertia, inertia};
+    if (index.overlaps({p.position, p.radius})) f.fail(key + ".position", "overlaps another particle");
+    index.insert({p.position, p.radius});
+    world->add_particle(p);
+  }
+  std::mt19937_64 rng(run.seed);
+  const std::size_t inserts = f.array_size("insert");
+  for (std::size_t k = 0; k < inserts; ++k) {
+    const std::string key = indexed("insert", k);
+    const int s = species_index(key + ".species");
+    const auto count = static_cast<std::size_t>(f.get<std::int64_t>(key + ".count", io::non_negative));
+    const Vec3 lo = f.get<Vec3>(key + ".region_lo"), hi = f.get<Vec3>(key + ".region_hi");
+    for (int a = 0; a < 3; ++a)
+      if (!(hi[a] > lo[a])) f.fail(key + ".region_hi", "must exceed region_lo on every axis");
+    if (!inside(lo) || !inside(hi)) f.fail(key + ".region_hi", "insertion region outside the domain");
+    const double growth = f.get_or<double>(key + ".growth", 0.0, io::non_negative);
+    const double r_min = f.get_or<double>(key + ".radius_min", species[s].radius, io::positive);
+    const double r_max = f.get_or<double>(key + ".radius_max", species[s].radius, io::positive);
+    if (r_max < r_min) f.fail(key + ".radius_max", "must not be below radius_min");
+    const Vec3 velocity = f.get_or<Vec3>(key + ".velocity", Vec3{});
+    const std::size_t first = index.spheres().size();
+    try {
+      insert_growing(index, count, lo, hi - lo, growth,
+                     [&](std::mt19937_64& g) { return r_min + (r_max - r_min) * std::uniform_real_distribution<double>(0, 1)(g); },
+                     rng, domain.hi.z - lo.z);
+    } catch (const std::runtime_error& e) {
+      f.fail(key + ".count", std::string(e.what()) + "; enlarge the region or set growth");
+    }
+    for (std::size_t q = first; q < index.spheres().size(); ++q) {
+      const Sphere& sp = index.spheres()[q];
+      ParticleInit p;
+      p.species = s;
+      p.position = sp.centre;
+      p.velocity = velocity;
+      p.radius = sp.radius;
+      p.mass = species[s].density * 4.0 / 3.0 * kPi * p.radius * p.radius * p.radius;
+      const double inertia = 0.4 * p.mass * p.radius * p.radius;
+      p.inertia = {inertia, inertia, inertia};
+      world->add_particle(p);
+    }
+  }
+  if (world->particles().owned == 0) f.fail("particles", "the scenario has no particles");
+
+  // A periodic box must hold two interaction ranges.
+  double r_max = 0;
+  for (std::size_t i = 0; i < world->particles().owned; ++i) r_max = std::max(r_max, world->particles().radius[i]);
+  for (int a = 0; a < 3; ++a)
+    if (domain.periodic[a] && domain.length(a) < 2 * (2.2 * r_max))
+      f.fail(chute ? "chute" : "domain.hi", "periodic box narrower than two particle diameters plus skin");
+
+  f.check_no_unknown_keys();
+  for (const auto& s : species) sc.species.push_back(s.name);
+  sc.wall_materials = materials;
+  sc.derived["particles"] = world->particles().owned;
+  sc.derived["walls"] = world->walls().size();
+  sc.derived["expected_memory_bytes"] = world->particles().owned * 400;  // measured engine footprint per particle, with margin
+  sc.world = std::move(world);
+  return sc;
+}
+
+}  // namespace talus

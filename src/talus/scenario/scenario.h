@@ -1,0 +1,36 @@
+#pragma once
+// A scenario file turned into a ready World plus what the run loop needs to know.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "talus/io/scenario_file.h"
+#include "talus/world/world.h"
+
+namespace talus {
+
+struct RunControl {
+  double end_time = 0;                       ///< s
+  double output_interval = 0;                ///< s between time-series rows
+  std::optional<double> stop_kinetic_energy; ///< J: stop once E_kin falls below, after stop_min_time
+  double stop_min_time = 0;                  ///< s
+  std::uint64_t seed = 1;
+};
+
+struct Scenario {
+  std::unique_ptr<World> world;
+  RunControl control;
+  std::vector<std::string> species;          ///< names, by species index
+  std::vector<std::string> wall_materials;   ///< names, by material index
+  nlohmann::json derived;                    ///< contact times, time step, counts: printed by `talus check`
+};
+
+// Reads every section, validates it (errors name file, line and key) and builds the World.
+// Fails on keys nobody read. Overrides (--set) must be applied to `file` before.
+Scenario load_scenario(io::ScenarioFile& file);
+
+}  // namespace talus
