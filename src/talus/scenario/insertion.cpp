@@ -9,6 +9,13 @@ namespace talus {
 
 SphereOverlapIndex::SphereOverlapIndex(const Vec3& lo, const Vec3& hi, const bool periodic[3], double cell)
     : lo_(lo), hi_(hi), cell_(cell) {
+  // A large box of small spheres would need more cells than spheres: widen the cells.
+  for (;; cell *= 1.5) {
+    double total = 1;
+    for (int a = 0; a < 3; ++a) total *= std::max(1.0, std::floor((hi[a] - lo[a]) / cell));
+    if (total <= (1 << 20)) break;
+  }
+  cell_ = cell;
   for (int a = 0; a < 3; ++a) {
     periodic_[a] = periodic[a];
     count_[a] = std::max(1, static_cast<int>(std::floor((hi[a] - lo[a]) / cell)));
@@ -28,11 +35,13 @@ long SphereOverlapIndex::key(int a, int b, int c) const {
 bool SphereOverlapIndex::overlaps(const Sphere& s) const {
   int c[3];
   for (int a = 0; a < 3; ++a) c[a] = cell_index(s.centre[a], a);
-  // Neighbouring cells; a sphere larger than a cell needs a wider search.
-  const int reach = 1;
-  for (int dx = -reach; dx <= reach; ++dx)
-    for (int dy = -reach; dy <= reach; ++dy)
-      for (int dz = -reach; dz <= reach; ++dz) {
+  // Search as many cells out as the largest possible centre distance needs.
+  int reach[3];
+  for (int a = 0; a < 3; ++a)
+    reach[a] = std::min(count_[a], std::max(1, static_cast<int>(std::ceil((s.radius + max_radius_) / ((hi_[a] - lo_[a]) / count_[a])))));
+  for (int dx = -reach[0]; dx <= reach[0]; ++dx)
+    for (int dy = -reach[1]; dy <= reach[1]; ++dy)
+      for (int dz = -reach[2]; dz <= reach[2]; ++dz) {
         int k[3] = {c[0] + dx, c[1] + dy, c[2] + dz};
         bool skip = false;
         for (int a = 0; a < 3; ++a) {
@@ -56,6 +65,7 @@ void SphereOverlapIndex::insert(const Sphere& s) {
   cells_[key(cell_index(s.centre.x, 0), cell_index(s.centre.y, 1), cell_index(s.centre.z, 2))].push_back(
       static_cast<std::uint32_t>(spheres_.size()));
   spheres_.push_back(s);
+  max_radius_ = std::max(max_radius_, s.radius);
 }
 
 double insert_growing(SphereOverlapIndex& index, std::size_t count, const Vec3& lo, const Vec3& size, double growth,

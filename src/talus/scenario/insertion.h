@@ -29,6 +29,7 @@ class SphereOverlapIndex {
   Vec3 lo_, hi_;
   bool periodic_[3];
   double cell_;
+  double max_radius_ = 0;
   int count_[3];
   std::vector<std::vector<std::uint32_t>> cells_;
   std::vector<Sphere> spheres_;

@@ -81,7 +81,8 @@ class World {
   ParticleStore& particles_mutable() { invalidate(); return particles_; }
   const std::vector<Wall>& walls() const { return walls_; }
   std::vector<Wall>& walls_mutable() { invalidate(); return walls_; }
-  Vec3 wall_force(std::size_t wall) const { return wall_force_[wall]; }  ///< N, total force of particles on the wall
+  /// N, total force of the particles on a wall at the last step (zero before the first)
+  Vec3 wall_force(std::size_t wall) const { return wall < wall_force_.size() ? wall_force_[wall] : Vec3{}; }
   std::size_t owned_count() const { return particles_.owned; }
   std::size_t pair_entries() const { return pairs_.entries(); }
   const PairList& pair_list() const { return pairs_; }

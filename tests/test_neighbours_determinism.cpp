@@ -1,0 +1,83 @@
+// The half neighbour list against brute force (periodic images included), and results that
+// do not depend on the number of threads.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <random>
+
+#include "talus/scenario/chute.h"
+#include "talus/world/world.h"
+#include "test_world_helpers.h"
+
+namespace talus {
+namespace {
+
+TEST(Neighbours, PeriodicContactsMatchBruteForce) {
+  WorldSettings s;
+  s.domain = {{0, 0, 0}, {6, 5, 7}};
+  s.domain.periodic[0] = s.domain.periodic[1] = s.domain.periodic[2] = true;
+  s.gravity = {};
+  s.time_step = 1e-6;
+  World w(s);
+  w.contacts().resize(1, 1);
+  ContactParams c;
+  c.normal_stiffness = 1e3;
+  w.contacts().set_pair(0, 0, c);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int k = 0; k < 3000; ++k) {
+    ParticleInit p = testing::sphere({6 * u(rng), 5 * u(rng), 7 * u(rng)}, 0.25 + 0.2 * u(rng), 1.0);
+    w.add_particle(p);
+  }
+  w.step();
+  const Snapshot snap = w.snapshot();
+  std::size_t brute = 0;
+  double brute_energy = 0;
+  for (std::size_t i = 0; i < snap.particles.size(); ++i)
+    for (std::size_t j = i + 1; j < snap.particles.size(); ++j) {
+      const Vec3 d = s.domain.minimum_image(snap.particles[i].position - snap.particles[j].position);
+      const double overlap = snap.particles[i].radius + snap.particles[j].radius - norm(d);
+      if (overlap > 0) ++brute, brute_energy += 0.5 * c.normal_stiffness * overlap * overlap;
+    }
+  const Diagnostics d = w.diagnostics();
+  EXPECT_GT(brute, 1000u);
+  EXPECT_EQ(d.contacts, brute);
+  EXPECT_NEAR(d.elastic_normal / brute_energy, 1.0, 1e-12);
+  // Newton's third law: the contact forces sum to zero.
+  Vec3 total;
+  for (const ContactRecord& r : snap.contacts) total += r.force - r.force;  // each pair listed once
+  Vec3 net;
+  for (std::size_t i = 0; i < w.particles().owned; ++i) net += w.particles().force[i];
+  EXPECT_LT(norm(net), 1e-9 * c.normal_stiffness);
+}
+
+std::vector<Vec3> run_chute(int threads) {
+  omp_set_num_threads(threads);
+  ChuteSetup s;
+  s.flow = s.base = weinhart_chute_contact();
+  s.base_diameter = 0;  // flat base: quick to build
+  s.fill_height = 12;   // 2400 particles: enough to run in parallel
+  s.angle_deg = 26;
+  auto w = build_chute(s);
+  w->run(1500);
+  const Snapshot snap = w->snapshot();
+  std::vector<Vec3> x;
+  for (const auto& p : snap.particles) x.push_back(p.position);
+  return x;
+}
+
+TEST(Determinism, SameResultsOnOneAndTwoThreads) {
+  const int before = omp_get_max_threads();
+  const std::vector<Vec3> one = run_chute(1);
+  const std::vector<Vec3> two = run_chute(2);
+  const std::vector<Vec3> again = run_chute(2);
+  omp_set_num_threads(before);
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    ASSERT_EQ(one[i], two[i]) << "particle " << i;
+    ASSERT_EQ(two[i], again[i]) << "particle " << i;
+  }
+}
+
+}  // namespace
+}  // namespace talus
