@@ -103,6 +103,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   double next_output = world.time() + run.output_interval;
   const double dt = world.settings().time_step;
   while (world.time() < run.end_time - 0.5 * dt) {
+    for (Pouring& pour : sc.pours) pour.pour_due(world);
     world.step();
     if (world.time() >= next_output - 0.5 * dt) {
       next_output += run.output_interval;

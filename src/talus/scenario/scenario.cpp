@@ -298,7 +298,31 @@ Scenario load_scenario(ScenarioFile& f) {
       world->add_particle(p);
     }
   }
-  if (world->particles().owned == 0) f.fail("particles", "the scenario has no particles");
+  const std::size_t pour_count = f.array_size("pour");
+  for (std::size_t k = 0; k < pour_count; ++k) {
+    const std::string key = indexed("pour", k);
+    PourSpec p;
+    p.species = species_index(key + ".species");
+    p.density = species[p.species].density;
+    p.total = static_cast<std::size_t>(f.get<std::int64_t>(key + ".count", io::positive));
+    p.batch = static_cast<std::size_t>(f.get<std::int64_t>(key + ".batch", io::positive));
+    p.interval = f.get<double>(key + ".interval", io::positive);
+    p.start_time = f.get_or<double>(key + ".start_time", 0.0, io::non_negative);
+    p.region_lo = f.get<Vec3>(key + ".region_lo");
+    p.region_hi = f.get<Vec3>(key + ".region_hi");
+    for (int a = 0; a < 3; ++a)
+      if (!(p.region_hi[a] > p.region_lo[a])) f.fail(key + ".region_hi", "must exceed region_lo on every axis");
+    if (!inside(p.region_lo) || !inside(p.region_hi)) f.fail(key + ".region_hi", "pouring region outside the domain");
+    p.radius_min = f.get_or<double>(key + ".radius_min", species[p.species].radius, io::positive);
+    p.radius_max = f.get_or<double>(key + ".radius_max", species[p.species].radius, io::positive);
+    if (p.radius_max < p.radius_min) f.fail(key + ".radius_max", "must not be below radius_min");
+    p.velocity = f.get_or<Vec3>(key + ".velocity", Vec3{});
+    sc.pours.emplace_back(p, run.seed + 1000 + k);
+  }
+  if (world->particles().owned == 0) {
+    if (sc.pours.empty()) f.fail("particles", "the scenario has no particles (add [[particles]], [[insert]] or [[pour]])");
+    sc.pours.front().pour_due(*world);
+  }
 
   // A periodic box must hold two interaction ranges.
   double r_max = 0;

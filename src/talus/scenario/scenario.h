@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "talus/io/scenario_file.h"
+#include "talus/scenario/pouring.h"
 #include "talus/world/world.h"
 
 namespace talus {
@@ -26,6 +27,7 @@ struct Scenario {
   RunControl control;
   std::vector<std::string> species;          ///< names, by species index
   std::vector<std::string> wall_materials;   ///< names, by material index
+  std::vector<Pouring> pours;                ///< particles poured while the run goes on
   nlohmann::json derived;                    ///< contact times, time step, counts: printed by `talus check`
 };
 

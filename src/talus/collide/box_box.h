@@ -1,0 +1,28 @@
+#pragma once
+// Box-box contact by the separating axis test: the 3 + 3 face normals and 9 edge-edge
+// directions (Gottschalk et al. 1996; Ericson 2005, Sec. 4.4.1). The axis of least overlap
+// gives depth and normal; face axes win ties and, when warm-started, the previous axis is
+// kept while within 0.5 % of the least overlap, so the normal does not flip between nearly
+// equal faces from step to step (a flipping normal corrupts tangential history).
+//   box_box_sat(...)     : the axis test alone
+//   box_box_contact(...) : single contact point; for a face axis C is the centroid of the
+//                          deepest clipped manifold points (manifold.h), for an edge pair the
+//                          midpoint of the closest points of the two edges.
+#include "talus/collide/convex_contact.h"
+
+namespace talus {
+
+struct BoxBoxSat {
+  bool separated = false;
+  double depth = 0;  ///< least overlap (m); when separated, minus the largest gap found (a lower bound)
+  Vec3 normal;       ///< unit, from B to A (world)
+  int axis = -1;     ///< 0-2: faces of A, 3-5: faces of B, 6 + 3i + j: edge i of A x edge j of B
+};
+
+BoxBoxSat box_box_sat(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
+                      int warm_axis = -1);
+
+ContactGeometry box_box_contact(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
+                                ContactCache* warm = nullptr);
+
+}  // namespace talus

@@ -1,0 +1,46 @@
+#pragma once
+// Contact manifolds: up to 4 points per pair when a face lies against a face or an edge
+// against a face (goes beyond Huet et al. 2021, who use one point for these cases).
+//   box_box_manifold(...)      : reference face = face of the SAT axis; the most anti-parallel
+//                                face of the other box is clipped against the reference face's
+//                                side planes (Sutherland-Hodgman); points below the reference
+//                                face are kept. Edge-edge axes give one point.
+//   convex_plane_manifold(...) : box / polyhedron vertices below a half-space (nominal sharp
+//                                geometry); spheres and cylinders give the single support point.
+//   contact_manifold(...)      : dispatch; box-box by SAT+clipping, otherwise narrow_phase's
+//                                single point (single-point mode stays available everywhere).
+// More than 4 candidates are reduced to the deepest plus the three that span the largest area.
+// feature_id is stable while the touching features stay the same, so a caller can key
+// tangential history per point: box-box (reference face 0-11 << 24 | incident face << 16 |
+// incident-edge mask << 8 | side-plane mask), plane: vertex index.
+#include <array>
+#include <cstdint>
+
+#include "talus/collide/box_box.h"
+#include "talus/collide/convex_contact.h"
+#include "talus/collide/convex_contact_analytic.h"
+
+namespace talus {
+
+struct ManifoldPoint {
+  double delta_n = 0;           ///< overlap at this point (m)
+  Vec3 point;                   ///< midpoint of point_a and point_b (m)
+  Vec3 point_a;                 ///< point of A (m)
+  Vec3 point_b;                 ///< point of B (m)
+  std::uint32_t feature_id = 0; ///< stable id of the touching features
+};
+
+struct ContactManifold {
+  Vec3 normal;  ///< unit, from B to A, shared by all points
+  int count = 0;
+  std::array<ManifoldPoint, 4> points;
+  ContactMethod method = ContactMethod::kNone;
+};
+
+ContactManifold box_box_manifold(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
+                                 const BoxBoxSat& sat);
+ContactManifold convex_plane_manifold(const ConvexShape& a, const Pose& pose_a, const HalfSpace& plane);
+ContactManifold contact_manifold(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,
+                                 ContactCache* warm = nullptr);
+
+}  // namespace talus

@@ -1,0 +1,39 @@
+#pragma once
+// Pouring: batches of particles inserted at random free places of a region while the run goes
+// on, until a total count is reached.
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "talus/world/world.h"
+
+namespace talus {
+
+struct PourSpec {
+  int species = 0;
+  double density = 0;            ///< kg/m^3
+  double radius_min = 0, radius_max = 0;  ///< m
+  Vec3 region_lo, region_hi;     ///< m
+  Vec3 velocity;                 ///< m/s, initial velocity of poured particles
+  std::size_t total = 0;         ///< particles to pour in all
+  std::size_t batch = 0;         ///< tried per pouring event
+  double interval = 0;           ///< s between events
+  double start_time = 0;         ///< s
+};
+
+class Pouring {
+ public:
+  Pouring(PourSpec spec, std::uint64_t seed) : spec_(spec), rng_(seed) {}
+  // Inserts the batches that are due at the world's time; returns how many were added.
+  std::size_t pour_due(World& world);
+  bool done() const { return poured_ >= spec_.total; }
+  std::size_t poured() const { return poured_; }
+
+ private:
+  PourSpec spec_;
+  std::mt19937_64 rng_;
+  std::size_t poured_ = 0;
+  double next_time_ = -1;
+};
+
+}  // namespace talus
