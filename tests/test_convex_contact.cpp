@@ -93,7 +93,7 @@ ConvexShape random_box(std::mt19937_64& rng, bool sharp) {
 
 // Shape-independent consistency: finite, unit normal, point_a on A's contact surface along -n,
 // point_b on B's along +n, and point_a - point_b = -delta_n n.
-void expect_consistent(const ContactGeometry& g, const ConvexShape& a, const Pose& pa, const ConvexShape& b,
+void expect_consistent(const PartContact& g, const ConvexShape& a, const Pose& pa, const ConvexShape& b,
                        const Pose& pb, double tol, bool sharp = false) {
   ASSERT_TRUE(std::isfinite(g.delta_n) && std::isfinite(g.point.x) && std::isfinite(g.normal.z));
   EXPECT_NEAR(norm(g.normal), 1, 1e-9);
@@ -123,7 +123,7 @@ void random_pairs(const char* name, int trials, unsigned seed, auto make_a, auto
     const Pose pb{pa.position + normalized_or_zero({g(rng), g(rng), g(rng)}) * (reach * (0.35 + 0.7 * u(rng))),
                   random_quat(rng)};
     const Reference ref = brute_force(a, pa, b, pb);
-    const ContactGeometry c = query(a, pa, b, pb);
+    const PartContact c = query(a, pa, b, pb);
     ASSERT_TRUE(std::isfinite(c.delta_n) && std::isfinite(c.normal.x) && std::isfinite(c.point.x));
     const double tiny = 1e-9 * reach;
     if (ref.overlap < -tiny) {
@@ -210,7 +210,7 @@ TEST(ConvexContact, DegenerateCasesNoNaN) {
     };
     for (const Case& c : cases) {
       for (const ConvexShape* s : {&cube, &sharp}) {
-        const ContactGeometry g = narrow_phase(*s, c.pa, *s, c.pb);
+        const PartContact g = narrow_phase(*s, c.pa, *s, c.pb);
         SCOPED_TRACE(std::string(c.name) + (s == &cube ? " crust" : " sharp") + " d=" + std::to_string(d));
         ASSERT_TRUE(std::isfinite(g.delta_n) && std::isfinite(g.normal.x) && std::isfinite(g.point.x));
         // The rounded edges of the crust shape sit lower than sharp ones by c (sqrt2 - 1) or c (sqrt3 - 1).
@@ -234,17 +234,17 @@ TEST(ConvexContact, AnalyticSphereBoxAndPlane) {
   std::uniform_real_distribution<double> u(-3, 3);
   for (int i = 0; i < 500; ++i) {
     const Pose ps{{u(rng), u(rng), u(rng)}, {}};
-    const ContactGeometry an = narrow_phase(ball, ps, box, pb);
-    const ContactGeometry gj = crust_contact(ball, ps, box, pb);
+    const PartContact an = narrow_phase(ball, ps, box, pb);
+    const PartContact gj = crust_contact(ball, ps, box, pb);
     ASSERT_EQ(an.touching, gj.touching);
     if (!an.touching) continue;
     EXPECT_NEAR(an.delta_n, gj.delta_n, 1e-6);
     EXPECT_NEAR(norm(an.normal - gj.normal), 0, 1e-5);
-    const ContactGeometry flipped = narrow_phase(box, pb, ball, ps);
+    const PartContact flipped = narrow_phase(box, pb, ball, ps);
     EXPECT_NEAR(norm(flipped.normal + an.normal), 0, 1e-15);
   }
   const HalfSpace floor{{0, 0, 1}, 0};
-  const ContactGeometry p = convex_plane_contact(box, Pose{{0, 0, 0.9}, {}}, floor);
+  const PartContact p = convex_plane_contact(box, Pose{{0, 0, 0.9}, {}}, floor);
   EXPECT_NEAR(p.delta_n, 2.1, 1e-12);
   EXPECT_NEAR(p.point_b.z, 0, 1e-12);
 }
@@ -288,7 +288,7 @@ TEST(ConvexContactManifold, BoxOnBoxFaceAndEdge) {
   ASSERT_EQ(m.count, 2);
   EXPECT_NEAR(m.points[0].delta_n, 0.01, 1e-12);
   EXPECT_NEAR(m.points[1].delta_n, 0.01, 1e-12);
-  const ContactGeometry g = narrow_phase(small, tilted, big, Pose{});
+  const PartContact g = narrow_phase(small, tilted, big, Pose{});
   EXPECT_NEAR(norm(g.point - (m.points[0].point + m.points[1].point) * 0.5), 0, 1e-12);
 }
 
@@ -317,7 +317,7 @@ TEST(ConvexContact, HuetCrossPartsNoNaN) {
   int touching = 0;
   for (const CompositePart& a : cross.parts)
     for (const CompositePart& b : cross.parts) {
-      const ContactGeometry g = narrow_phase(a.shape, p2 * a.pose, b.shape, p1 * b.pose);
+      const PartContact g = narrow_phase(a.shape, p2 * a.pose, b.shape, p1 * b.pose);
       ASSERT_TRUE(std::isfinite(g.delta_n) && std::isfinite(g.point.x));
       touching += g.touching;
       if (g.touching) EXPECT_LT(g.delta_n, 3e-3);

@@ -85,13 +85,13 @@ TEST(GjkSphere, CrustMatchesAnalyticSphereSphere) {
     const double ra = 0.5 + 0.4 * u(rng), rb = 0.5 + 0.4 * u(rng);
     const Vec3 ca{u(rng), u(rng), u(rng)};
     const Vec3 cb = ca + normalized_or_zero({u(rng), u(rng), u(rng)}) * ((ra + rb) * (0.6 + 0.39 * u(rng)));
-    const ContactGeometry ref = sphere_sphere_contact(ra, ca, rb, cb);
+    const PartContact ref = sphere_sphere_contact(ra, ca, rb, cb);
     // Sphere core of radius r - c rounded by c: a curved core, not a point.
     ConvexShape sa{Sphere{ra}, Sphere{ra * 0.8}, ra * 0.2, ra}, sb{Sphere{rb}, Sphere{rb * 0.7}, rb * 0.3, rb};
     for (const auto& [a, b] : {std::pair{make_sphere(ra), make_sphere(rb)}, std::pair{sa, sb}}) {
       // Curved cores must not intersect here: beyond the crust EPA answers (to ~1e-4 on spheres).
       if (a.crust + b.crust < ref.delta_n) continue;
-      const ContactGeometry g = crust_contact(a, Pose{ca, {}}, b, Pose{cb, {}});
+      const PartContact g = crust_contact(a, Pose{ca, {}}, b, Pose{cb, {}});
       ASSERT_TRUE(g.touching);
       EXPECT_NEAR(g.delta_n, ref.delta_n, 1e-8 * ref.delta_n);
       EXPECT_NEAR(norm(g.normal - ref.normal), 0, 1e-8);

@@ -91,10 +91,10 @@ BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose
   return r;
 }
 
-ContactGeometry box_box_contact(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, ContactCache* warm) {
+PartContact box_box_contact(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, ContactCache* warm) {
   const BoxBoxSat sat = box_box_sat(ha, pa, hb, pb, warm ? warm->sat_axis : -1);
   if (warm) warm->sat_axis = sat.axis;
-  ContactGeometry g;
+  PartContact g;
   g.method = ContactMethod::kBoxBoxSat;
   g.normal = sat.normal;
   g.delta_n = sat.depth;

@@ -22,7 +22,7 @@ struct BoxBoxSat {
 BoxBoxSat box_box_sat(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                       int warm_axis = -1);
 
-ContactGeometry box_box_contact(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
+PartContact box_box_contact(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                                 ContactCache* warm = nullptr);
 
 }  // namespace talus

@@ -10,7 +10,7 @@
 
 namespace talus {
 
-ContactGeometry finish_contact(ContactGeometry g, bool flip) {
+PartContact finish_contact(PartContact g, bool flip) {
   if (flip) {
     g.normal = -g.normal;
     std::swap(g.point_a, g.point_b);
@@ -20,7 +20,7 @@ ContactGeometry finish_contact(ContactGeometry g, bool flip) {
   return g;
 }
 
-ContactGeometry crust_contact(const ConvexShape& a, const Pose& pa, const ConvexShape& b, const Pose& pb,
+PartContact crust_contact(const ConvexShape& a, const Pose& pa, const ConvexShape& b, const Pose& pb,
                               ContactCache* warm) {
   const PosedSupport ca{&a.core, pa, 0.0}, cb{&b.core, pb, 0.0};
   const double crusts = a.crust + b.crust;
@@ -29,7 +29,7 @@ ContactGeometry crust_contact(const ConvexShape& a, const Pose& pa, const Convex
   opt.scale = a.bounding_radius + b.bounding_radius;
   opt.warm_direction = warm && norm2(warm->separation) > 0 ? warm->separation : pa.position - pb.position;
   const GjkResult r = gjk_distance(ca, cb, opt);
-  ContactGeometry g;
+  PartContact g;
   g.iterations = r.iterations;
   if (r.beyond_margin) {
     if (warm) warm->separation = opt.warm_direction;  // still separating: keep it
@@ -73,7 +73,7 @@ ContactGeometry crust_contact(const ConvexShape& a, const Pose& pa, const Convex
   return finish_contact(g);
 }
 
-ContactGeometry narrow_phase(const ConvexShape& a, const Pose& pa, const ConvexShape& b, const Pose& pb,
+PartContact narrow_phase(const ConvexShape& a, const Pose& pa, const ConvexShape& b, const Pose& pb,
                              ContactCache* warm, const NarrowPhaseOptions& options) {
   const ShapeKind ka = a.kind(), kb = b.kind();
   if (ka == ShapeKind::kSphere && kb == ShapeKind::kSphere)

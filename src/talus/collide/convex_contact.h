@@ -1,7 +1,7 @@
 #pragma once
 // Narrow phase for one pair of convex parts under world poses.
 //
-//   ContactGeometry narrow_phase(a, pose_a, b, pose_b, cache, options)
+//   PartContact narrow_phase(a, pose_a, b, pose_b, cache, options)
 // dispatches to an analytic path (sphere-sphere, sphere-box, sharp box-box SAT) or to the
 // crust method: GJK distance between the cores, overlap = c_A + c_B - distance (GRAINS3D,
 // Wachs et al. 2012). Cores that intersect (overlap beyond the crusts) go to EPA on the cores
@@ -30,7 +30,7 @@ enum class ContactMethod : std::uint8_t {
   kPlane,         ///< convex vs half-space
 };
 
-struct ContactGeometry {
+struct PartContact {
   bool touching = false;  ///< delta_n > 0
   double delta_n = 0;     ///< overlap (m); negative = gap when known (may be a lower bound)
   Vec3 normal;            ///< unit, from B to A (world)
@@ -50,14 +50,14 @@ struct NarrowPhaseOptions {
   bool sharp_boxes = false;  ///< box-box by SAT on the nominal sharp boxes instead of the crust
 };
 
-ContactGeometry narrow_phase(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,
+PartContact narrow_phase(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,
                              ContactCache* warm = nullptr, const NarrowPhaseOptions& options = {});
 
 // The crust method alone (any pair of shapes), for tests and for callers that want one model.
-ContactGeometry crust_contact(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,
+PartContact crust_contact(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,
                               ContactCache* warm = nullptr);
 
 // Fills point from point_a/point_b, sets touching; swaps roles A<->B when flip is true.
-ContactGeometry finish_contact(ContactGeometry g, bool flip = false);
+PartContact finish_contact(PartContact g, bool flip = false);
 
 }  // namespace talus

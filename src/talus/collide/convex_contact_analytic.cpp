@@ -5,10 +5,10 @@
 
 namespace talus {
 
-ContactGeometry sphere_sphere_contact(double radius_a, const Vec3& centre_a, double radius_b, const Vec3& centre_b) {
+PartContact sphere_sphere_contact(double radius_a, const Vec3& centre_a, double radius_b, const Vec3& centre_b) {
   const Vec3 d = centre_a - centre_b;
   const double dist = norm(d);
-  ContactGeometry g;
+  PartContact g;
   g.method = ContactMethod::kSphereSphere;
   g.normal = dist > 0 ? d / dist : Vec3{0, 0, 1};  // concentric: any direction is as good
   g.delta_n = radius_a + radius_b - dist;
@@ -17,12 +17,12 @@ ContactGeometry sphere_sphere_contact(double radius_a, const Vec3& centre_a, dou
   return finish_contact(g);
 }
 
-ContactGeometry sphere_box_contact(double radius_a, const Vec3& centre_a, const Vec3& core_half_extents_b,
+PartContact sphere_box_contact(double radius_a, const Vec3& centre_a, const Vec3& core_half_extents_b,
                                    double rounding_b, const Pose& pose_b) {
   const Vec3 q = pose_b.to_child(centre_a);
   const Vec3& h = core_half_extents_b;
   const Vec3 clamped{std::clamp(q.x, -h.x, h.x), std::clamp(q.y, -h.y, h.y), std::clamp(q.z, -h.z, h.z)};
-  ContactGeometry g;
+  PartContact g;
   g.method = ContactMethod::kSphereBox;
   Vec3 n_local, surface_local;
   const double dist = norm(q - clamped);
@@ -45,9 +45,9 @@ ContactGeometry sphere_box_contact(double radius_a, const Vec3& centre_a, const 
   return finish_contact(g);
 }
 
-ContactGeometry convex_plane_contact(const ConvexShape& a, const Pose& pose_a, const HalfSpace& plane) {
+PartContact convex_plane_contact(const ConvexShape& a, const Pose& pose_a, const HalfSpace& plane) {
   const PosedSupport sa{&a.core, pose_a, a.crust};
-  ContactGeometry g;
+  PartContact g;
   g.method = ContactMethod::kPlane;
   g.normal = plane.normal;
   g.point_a = sa.support(-plane.normal);

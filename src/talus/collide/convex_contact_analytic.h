@@ -14,9 +14,9 @@ struct HalfSpace {
   double offset = 0;  ///< (m)
 };
 
-ContactGeometry sphere_sphere_contact(double radius_a, const Vec3& centre_a, double radius_b, const Vec3& centre_b);
-ContactGeometry sphere_box_contact(double radius_a, const Vec3& centre_a, const Vec3& core_half_extents_b,
+PartContact sphere_sphere_contact(double radius_a, const Vec3& centre_a, double radius_b, const Vec3& centre_b);
+PartContact sphere_box_contact(double radius_a, const Vec3& centre_a, const Vec3& core_half_extents_b,
                                    double rounding_b, const Pose& pose_b);
-ContactGeometry convex_plane_contact(const ConvexShape& a, const Pose& pose_a, const HalfSpace& plane);
+PartContact convex_plane_contact(const ConvexShape& a, const Pose& pose_a, const HalfSpace& plane);
 
 }  // namespace talus

@@ -62,7 +62,7 @@ ContactManifold box_box_manifold(const Vec3& ha, const Pose& pa, const Vec3& hb,
   out.method = ContactMethod::kBoxBoxSat;
   if (sat.separated || sat.axis < 0) return out;
   if (sat.axis >= 6) {  // edge-edge: a single point
-    const ContactGeometry g = box_box_contact(ha, pa, hb, pb);
+    const PartContact g = box_box_contact(ha, pa, hb, pb);
     out.points[0] = make_point(g.point_a, g.point_b, g.delta_n, 0xFFu << 24 | static_cast<unsigned>(sat.axis));
     out.count = 1;
     return out;
@@ -138,7 +138,7 @@ ContactManifold convex_plane_manifold(const ConvexShape& a, const Pose& pa, cons
   } else if (const ConvexPolyhedron* p = std::get_if<ConvexPolyhedron>(&a.geometry)) {
     vertices = p->hull.vertices;
   } else {
-    const ContactGeometry g = convex_plane_contact(a, pa, plane);
+    const PartContact g = convex_plane_contact(a, pa, plane);
     ContactManifold m;
     m.normal = plane.normal;
     m.method = ContactMethod::kPlane;
@@ -163,7 +163,7 @@ ContactManifold contact_manifold(const ConvexShape& a, const Pose& pa, const Con
     if (warm) warm->sat_axis = sat.axis;
     return box_box_manifold(ba->half_extents, pa, bb->half_extents, pb, sat);
   }
-  const ContactGeometry g = narrow_phase(a, pa, b, pb, warm);
+  const PartContact g = narrow_phase(a, pa, b, pb, warm);
   ContactManifold m;
   m.normal = g.normal;
   m.method = g.method;

@@ -96,7 +96,9 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
 }
 
 void PairList::transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
-                               const std::vector<std::uint32_t>& gid, std::size_t gid_limit) {
+                               const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
+                               std::vector<std::int64_t>* origin) {
+  if (origin) origin->assign(entries(), 0);
   if (old.entries() == 0) return;
   // Old row of each global id (owned particles only).
   std::vector<std::int32_t> old_row_of(gid_limit, -1);
@@ -119,6 +121,7 @@ void PairList::transfer_memory(const PairList& old, const std::vector<std::uint3
         reversed = true;
       }
       if (f >= 0 && old.memory.active(f)) memory.copy_from(old.memory, f, e, reversed);
+      if (f >= 0 && origin) (*origin)[e] = reversed ? -(f + 1) : f + 1;
     }
   }
 }

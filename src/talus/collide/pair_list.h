@@ -40,8 +40,11 @@ class PairList {
   void build(const ParticleStore& particles, const std::vector<CellCoord>& cell_of, const CellGrid& grid,
              double skin, const MemoryLayout& layout);
   // Carries the memory of every pair still listed over from `old` (keyed by global ids).
+  // `origin`, if given, receives per new entry the old entry it continues (+1, negated when
+  // the pair's order flipped; 0 for a new pair), for memories kept outside the list.
   void transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
-                       const std::vector<std::uint32_t>& gid, std::size_t gid_limit);
+                       const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
+                       std::vector<std::int64_t>* origin = nullptr);
 
   std::size_t rows() const { return row_.empty() ? 0 : row_.size() - 1; }
   std::uint32_t row_begin(std::size_t i) const { return row_[i]; }

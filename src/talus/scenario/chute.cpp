@@ -60,7 +60,7 @@ std::vector<Vec3> make_rough_base(double length, double width, double lambda, st
   SphereOverlapIndex index(ws.domain.lo, {length, width, 200 * lambda}, ws.domain.periodic, lambda);
   insert_growing(index, count, {0, 0, 0.5 * lambda}, {length, width, 24 * lambda}, 0.01 * lambda,
                  [&](std::mt19937_64&) { return 0.5 * lambda; }, rng);
-  for (const Sphere& s : index.spheres()) world.add_sphere(s.centre, s.radius, density, 0);
+  for (const PlacedSphere& s : index.spheres()) world.add_sphere(s.centre, s.radius, density, 0);
 
   // Settled: mean kinetic energy below 1e-4 m g lambda (speeds ~0.01 sqrt(g lambda)).
   const double time_scale = std::sqrt(lambda);

@@ -32,7 +32,7 @@ long SphereOverlapIndex::key(int a, int b, int c) const {
   return (static_cast<long>(a) * count_[1] + b) * count_[2] + c;
 }
 
-bool SphereOverlapIndex::overlaps(const Sphere& s) const {
+bool SphereOverlapIndex::overlaps(const PlacedSphere& s) const {
   int c[3];
   for (int a = 0; a < 3; ++a) c[a] = cell_index(s.centre[a], a);
   // Search as many cells out as the largest possible centre distance needs.
@@ -61,7 +61,7 @@ bool SphereOverlapIndex::overlaps(const Sphere& s) const {
   return false;
 }
 
-void SphereOverlapIndex::insert(const Sphere& s) {
+void SphereOverlapIndex::insert(const PlacedSphere& s) {
   cells_[key(cell_index(s.centre.x, 0), cell_index(s.centre.y, 1), cell_index(s.centre.z, 2))].push_back(
       static_cast<std::uint32_t>(spheres_.size()));
   spheres_.push_back(s);
@@ -76,7 +76,7 @@ double insert_growing(SphereOverlapIndex& index, std::size_t count, const Vec3& 
   std::size_t placed = 0, failures = 0;
   while (placed < count) {
     const double r = radius(rng);
-    const Sphere s{{lo.x + size.x * unit(rng), lo.y + size.y * unit(rng), lo.z + top * unit(rng)}, r};
+    const PlacedSphere s{{lo.x + size.x * unit(rng), lo.y + size.y * unit(rng), lo.z + top * unit(rng)}, r};
     if (index.overlaps(s)) {
       top += growth;
       if (top > max_top || (growth == 0 && ++failures > max_attempts))

@@ -9,7 +9,7 @@
 
 namespace talus {
 
-struct Sphere {
+struct PlacedSphere {
   Vec3 centre;    ///< m
   double radius;  ///< m
 };
@@ -19,9 +19,9 @@ struct Sphere {
 class SphereOverlapIndex {
  public:
   SphereOverlapIndex(const Vec3& lo, const Vec3& hi, const bool periodic[3], double cell);
-  bool overlaps(const Sphere& s) const;
-  void insert(const Sphere& s);
-  const std::vector<Sphere>& spheres() const { return spheres_; }
+  bool overlaps(const PlacedSphere& s) const;
+  void insert(const PlacedSphere& s);
+  const std::vector<PlacedSphere>& spheres() const { return spheres_; }
 
  private:
   long key(int a, int b, int c) const;
@@ -32,7 +32,7 @@ class SphereOverlapIndex {
   double max_radius_ = 0;
   int count_[3];
   std::vector<std::vector<std::uint32_t>> cells_;
-  std::vector<Sphere> spheres_;
+  std::vector<PlacedSphere> spheres_;
 };
 
 // Weinhart et al. 2012, Sect. 5: place `count` spheres at uniform random positions in the box

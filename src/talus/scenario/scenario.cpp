@@ -286,7 +286,7 @@ Scenario load_scenario(ScenarioFile& f) {
       f.fail(key + ".count", std::string(e.what()) + "; enlarge the region or set growth");
     }
     for (std::size_t q = first; q < index.spheres().size(); ++q) {
-      const Sphere& sp = index.spheres()[q];
+      const PlacedSphere& sp = index.spheres()[q];
       ParticleInit p;
       p.species = s;
       p.position = sp.centre;

@@ -59,7 +59,7 @@ std::unique_ptr<World> build_settling_box(const SettlingBoxSetup& s) {
   const Vec3 region = s.box - 2.0 * margin;
   insert_growing(index, s.count, margin, {region.x, region.y, 0.3 * region.z}, 1e-3 * s.radius,
                  [&](std::mt19937_64&) { return s.radius; }, rng, region.z);
-  for (const Sphere& sp : index.spheres()) world->add_sphere(sp.centre, sp.radius, s.density, 0);
+  for (const PlacedSphere& sp : index.spheres()) world->add_sphere(sp.centre, sp.radius, s.density, 0);
   return world;
 }
 

@@ -49,9 +49,21 @@ Diagnostics World::diagnostics() const {
   }
   d.mean_speed = mobile ? speed_sum / mobile : 0;
   if (!ready_) return d;
+  auto add_points = [&](const SubContactList& list, const ContactParams& c, double radius) {
+    for (const SubContact& s : list) {
+      d.elastic_normal += 0.5 * s.share * c.normal_stiffness * s.overlap * s.overlap;
+      d.elastic_tangential += 0.5 * s.share * c.tangential_stiffness * norm2(s.spring);
+      d.max_overlap_ratio = std::max(d.max_overlap_ratio, s.overlap / radius);
+    }
+  };
   for (std::size_t i = 0; i < pairs_.rows(); ++i)
     for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
       const std::uint32_t j = pairs_.neighbor(e);
+      if (p.shape[i] != 0 || p.shape[j] != 0) {
+        d.contacts += pair_sub_[e].size();
+        add_points(pair_sub_[e], table_.pair(p.species[i], p.species[j]), std::min(p.radius[i], p.radius[j]));
+        continue;
+      }
       const double reach = p.radius[i] + p.radius[j];
       const double overlap = reach - norm(p.position[i] - p.position[j]);
       if (overlap <= 0) continue;
@@ -63,6 +75,11 @@ Diagnostics World::diagnostics() const {
     for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e) {
       const Wall& w = walls_[wall_pairs_.wall(e)];
       if (!w.active(time_) || p.inv_mass[i] == 0.0) continue;
+      if (p.shape[i] != 0) {
+        d.wall_contacts += wall_sub_[e].size();
+        add_points(wall_sub_[e], table_.wall(p.species[i], w.material), p.radius[i]);
+        continue;
+      }
       const Vec3 origin = w.origin_at(time_);
       const double overlap = p.radius[i] - dot(p.position[i] - origin, w.normal);
       if (overlap <= 0 || !wall_faces(w, origin, p.position[i], 0.0)) continue;
@@ -111,6 +128,19 @@ Snapshot World::snapshot() const {
   for (std::size_t i = 0; i < pairs_.rows(); ++i)
     for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
       const std::uint32_t j = pairs_.neighbor(e);
+      if (p.shape[i] != 0 || p.shape[j] != 0) {
+        for (const SubContact& sc : pair_sub_[e]) {
+          ContactRecord rec;
+          rec.i = record_of[i];
+          rec.j = record_of[owner(j)];
+          rec.point = settings_.domain.wrap(sc.point);
+          rec.normal = sc.normal_prev;
+          rec.force = sc.force;
+          rec.overlap = sc.overlap;
+          s.contacts.push_back(rec);
+        }
+        continue;
+      }
       const Vec3 d = p.position[i] - p.position[j];
       const double reach = p.radius[i] + p.radius[j];
       const double dist = norm(d);
@@ -147,6 +177,19 @@ Snapshot World::snapshot() const {
     for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e) {
       const Wall& w = walls_[wall_pairs_.wall(e)];
       if (!w.active(time_) || p.inv_mass[i] == 0.0) continue;
+      if (p.shape[i] != 0) {
+        for (const SubContact& sc : wall_sub_[e]) {
+          ContactRecord rec;
+          rec.i = record_of[i];
+          rec.wall = wall_pairs_.wall(e);
+          rec.point = sc.point;
+          rec.normal = sc.normal_prev;
+          rec.force = sc.force;
+          rec.overlap = sc.overlap;
+          s.contacts.push_back(rec);
+        }
+        continue;
+      }
       const Vec3 origin = w.origin_at(time_);
       const double overlap = p.radius[i] - dot(p.position[i] - origin, w.normal);
       if (overlap <= 0 || !wall_faces(w, origin, p.position[i], 0.0)) continue;

@@ -51,6 +51,18 @@ void World::pair_forces(double memory_dt) {
           const double rj = p.radius[j];
           const double reach = ri + rj;
           const double dist2 = norm2(d);
+          if (p.shape[i] != 0 || p.shape[j] != 0) {  // rigid shapes: contacts between convex parts
+            if (dist2 >= reach * reach) {
+              pair_sub_[e].clear();
+              continue;
+            }
+            const ContactResult r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt);
+            fi += r.force_on_i;
+            ti += r.torque_i;
+            p.force[j] -= r.force_on_i;
+            p.torque[j] += r.torque_j;
+            continue;
+          }
           if (dist2 >= reach * reach) {
             if (has_spring && norm2(mem.spring[e]) > 0) mem.spring[e] = {};
             if (has_normal && norm2(mem.normal_prev[e]) > 0) mem.clear(e);
@@ -110,6 +122,17 @@ void World::wall_forces(double memory_dt) {
       const double r = p.radius[i];
       const double gap = dot(p.position[i] - origin[w], wall.normal);
       list.force_on_wall[e] = {};
+      if (p.shape[i] != 0) {
+        if (!active[w] || gap >= r) {
+          wall_sub_[e].clear();
+          continue;
+        }
+        const ContactResult res = composite_wall<Model>(i, wall, origin[w], wall_velocity[w], wall_sub_[e], memory_dt);
+        p.force[i] += res.force_on_i;
+        p.torque[i] += res.torque_i;
+        list.force_on_wall[e] = -res.force_on_i;
+        continue;
+      }
       if (!active[w] || gap >= r || !wall_faces(wall, origin[w], p.position[i], 0.0)) {
         mem.clear(e);
         continue;

@@ -31,7 +31,9 @@ void WallContactList::build(const ParticleStore& p, const std::vector<Wall>& wal
 }
 
 void WallContactList::transfer_memory(const WallContactList& old, const std::vector<std::uint32_t>& old_gid,
-                                      const std::vector<std::uint32_t>& gid, std::size_t gid_limit) {
+                                      const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
+                                      std::vector<std::int64_t>* origin) {
+  if (origin) origin->assign(entries(), 0);
   if (old.entries() == 0) return;
   std::vector<std::int32_t> old_row_of(gid_limit, -1);
   for (std::size_t i = 0; i < old.rows(); ++i) old_row_of[old_gid[i]] = static_cast<std::int32_t>(i);
@@ -39,8 +41,11 @@ void WallContactList::transfer_memory(const WallContactList& old, const std::vec
     const std::int32_t r = old_row_of[gid[i]];
     if (r < 0) continue;
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e)
-      for (std::uint32_t f = old.row_begin(r); f < old.row_end(r); ++f)
-        if (old.wall(f) == wall_[e] && old.memory.active(f)) memory.copy_from(old.memory, f, e, false);
+      for (std::uint32_t f = old.row_begin(r); f < old.row_end(r); ++f) {
+        if (old.wall(f) != wall_[e]) continue;
+        if (old.memory.active(f)) memory.copy_from(old.memory, f, e, false);
+        if (origin) (*origin)[e] = f + 1;
+      }
   }
 }
 

@@ -14,8 +14,10 @@ class WallContactList {
  public:
   void build(const ParticleStore& particles, const std::vector<Wall>& walls, double time, double skin,
              const MemoryLayout& layout);
+  // `origin`, if given, receives per new entry the old entry it continues (+1; 0 if new).
   void transfer_memory(const WallContactList& old, const std::vector<std::uint32_t>& old_gid,
-                       const std::vector<std::uint32_t>& gid, std::size_t gid_limit);
+                       const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
+                       std::vector<std::int64_t>* origin = nullptr);
 
   std::uint32_t row_begin(std::size_t i) const { return row_[i]; }
   std::uint32_t row_end(std::size_t i) const { return row_[i + 1]; }

@@ -47,6 +47,14 @@ std::uint32_t World::add_sphere(const Vec3& position, double radius, double dens
   return add_particle(init);
 }
 
+int World::add_shape(const CompositeShape& shape) {
+  shapes_.push_back(shape);
+  invalidate();
+  return static_cast<int>(shapes_.size()) - 1;
+}
+
+bool World::has_composites() const { return shapes_.size() > 1; }
+
 int World::add_wall(const Wall& wall) {
   walls_.push_back(wall);
   invalidate();
@@ -130,12 +138,28 @@ void World::rebuild() {
   PairList old_pairs = std::move(pairs_);
   pairs_ = PairList{};
   pairs_.build(p, cell_of, grid_, skin_, layout);
-  pairs_.transfer_memory(old_pairs, gid_at_build_, p.gid, next_gid_);
+  std::vector<std::int64_t> origin;
+  pairs_.transfer_memory(old_pairs, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
+  if (has_composites()) {
+    std::vector<SubContactList> fresh(pairs_.entries());
+    for (std::size_t e = 0; e < fresh.size(); ++e) {
+      const std::int64_t o = origin[e];
+      if (o > 0 && static_cast<std::size_t>(o - 1) < pair_sub_.size()) fresh[e] = std::move(pair_sub_[o - 1]);
+      if (o < 0 && static_cast<std::size_t>(-o - 1) < pair_sub_.size()) fresh[e] = reversed(pair_sub_[-o - 1]);
+    }
+    pair_sub_.swap(fresh);
+  }
 
   WallContactList old_walls = std::move(wall_pairs_);
   wall_pairs_ = WallContactList{};
   wall_pairs_.build(p, walls_, time_, skin_, layout);
-  wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_);
+  wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
+  if (has_composites()) {
+    std::vector<SubContactList> fresh(wall_pairs_.entries());
+    for (std::size_t e = 0; e < fresh.size(); ++e)
+      if (origin[e] > 0 && static_cast<std::size_t>(origin[e] - 1) < wall_sub_.size()) fresh[e] = std::move(wall_sub_[origin[e] - 1]);
+    wall_sub_.swap(fresh);
+  }
   gid_at_build_ = p.gid;  // owned and ghost ids of this build, for the next transfer
 
   position_at_build_.assign(p.position.begin(), p.position.begin() + p.owned);

@@ -13,7 +13,9 @@
 #include "talus/contact/contact_table.h"
 #include "talus/world/domain.h"
 #include "talus/world/periodic_ghosts.h"
+#include "talus/shape/composite_shape.h"
 #include "talus/world/phase_timer.h"
+#include "talus/world/sub_contacts.h"
 #include "talus/world/wall.h"
 #include "talus/world/wall_contacts.h"
 
@@ -25,6 +27,10 @@ struct WorldSettings {
   double time_step = 1e-5;                ///< s
   double skin = 0;                        ///< m, neighbour-list skin; 0 picks 10 % of the largest diameter
   TangentialModel tangential_model = TangentialModel::memory;
+  // Face and edge contacts between convex parts as manifolds of up to 4 points, each carrying
+  // k_n/n and eta_n/n of its manifold of n points; false: one point per part pair, as in
+  // Huet et al. 2021, Sec. II B.
+  bool contact_manifold = false;
 };
 
 struct ParticleInit {
@@ -66,6 +72,14 @@ class World {
   std::uint32_t add_particle(const ParticleInit& init);
   std::uint32_t add_sphere(const Vec3& position, double radius, double density, int species, bool fixed = false);
   int add_wall(const Wall& wall);
+  // Registers a rigid shape (parts in the body's principal frame); particles refer to it by index.
+  // Index 0 is the sphere, whose radius each particle carries.
+  int add_shape(const CompositeShape& shape);
+  const std::vector<CompositeShape>& shapes() const { return shapes_; }
+  // Contact points of non-spherical pairs and wall contacts, per list entry (empty for spheres).
+  const std::vector<SubContactList>& pair_sub_contacts() const { return pair_sub_; }
+  const std::vector<SubContactList>& wall_sub_contacts() const { return wall_sub_; }
+  const WallContactList& wall_list() const { return wall_pairs_; }
   ContactTable& contacts() { return table_; }
   const ContactTable& contacts() const { return table_; }
 
@@ -107,6 +121,12 @@ class World {
   void compute_forces(double memory_dt);
   template <TangentialModel Model> void pair_forces(double memory_dt);
   template <TangentialModel Model> void wall_forces(double memory_dt);
+  template <TangentialModel Model>
+  ContactResult composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt);
+  template <TangentialModel Model>
+  ContactResult composite_wall(std::size_t i, const Wall& wall, const Vec3& origin, const Vec3& wall_velocity,
+                               SubContactList& contacts, double memory_dt);
+  bool has_composites() const;
   double interaction_range() const;
   MemoryLayout memory_layout() const;
 
@@ -115,6 +135,8 @@ class World {
   std::vector<Wall> walls_;
   std::vector<Vec3> wall_force_;
   ContactTable table_;
+  std::vector<CompositeShape> shapes_ = std::vector<CompositeShape>(1);
+  std::vector<SubContactList> pair_sub_, wall_sub_;
   CellGrid grid_;
   PairList pairs_;
   WallContactList wall_pairs_;

@@ -1,0 +1,39 @@
+#pragma once
+// Contact points between the convex parts of two bodies (or a body and a wall), each with its
+// own memory, keyed by (part of i, part of j, feature) so that history follows a contact point
+// from step to step even as the manifold changes.
+#include <cstdint>
+#include <vector>
+
+#include "talus/math/vec3.h"
+
+namespace talus {
+
+struct SubContact {
+  std::uint16_t part_i = 0, part_j = 0;  ///< part indices in each body's composite
+  std::uint32_t feature = 0;             ///< manifold feature id (0 for single-point contacts)
+  Vec3 spring;                           ///< m, tangential memory delta_t
+  Vec3 normal_prev;                      ///< previous normal (zero: new contact)
+  Vec3 point;                            ///< m, contact point at the last step
+  Vec3 force;                            ///< N, force on i at the last step
+  double overlap = 0;                    ///< m
+  double share = 1;                      ///< fraction of k_n and eta_n this point carries (1/points of its manifold)
+
+  bool same_key(const SubContact& o) const { return part_i == o.part_i && part_j == o.part_j && feature == o.feature; }
+};
+
+using SubContactList = std::vector<SubContact>;
+
+// The list seen from the other body: parts swapped, memories negated.
+inline SubContactList reversed(const SubContactList& in) {
+  SubContactList out = in;
+  for (SubContact& s : out) {
+    std::swap(s.part_i, s.part_j);
+    s.spring = -s.spring;
+    s.normal_prev = -s.normal_prev;
+    s.force = -s.force;
+  }
+  return out;
+}
+
+}  // namespace talus
