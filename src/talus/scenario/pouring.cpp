@@ -35,13 +35,19 @@ std::size_t Pouring::pour_due(World& world) {
     if (index.overlaps({x, r})) continue;
     index.insert({x, r});
     ParticleInit init;
+    if (spec_.rigid) {
+      init = spec_.prototype;
+      std::normal_distribution<double> g(0, 1);
+      init.orientation = Quat{g(rng_), g(rng_), g(rng_), g(rng_)}.normalized();  // uniform on SO(3)
+    } else {
+      init.radius = r;
+      init.mass = spec_.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+      const double inertia = 0.4 * init.mass * r * r;
+      init.inertia = {inertia, inertia, inertia};
+      init.species = spec_.species;
+    }
     init.position = x;
     init.velocity = spec_.velocity;
-    init.radius = r;
-    init.mass = spec_.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
-    const double inertia = 0.4 * init.mass * r * r;
-    init.inertia = {inertia, inertia, inertia};
-    init.species = spec_.species;
     world.add_particle(init);
     ++added;
     ++poured_;

@@ -19,6 +19,8 @@ struct PourSpec {
   std::size_t batch = 0;         ///< tried per pouring event
   double interval = 0;           ///< s between events
   double start_time = 0;         ///< s
+  bool rigid = false;            ///< non-spherical: copies of `prototype` at random orientations
+  ParticleInit prototype;
 };
 
 class Pouring {

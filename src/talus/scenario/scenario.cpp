@@ -9,6 +9,8 @@
 #include "talus/scenario/chute.h"
 #include "talus/scenario/contact_reader.h"
 #include "talus/scenario/insertion.h"
+#include "talus/scenario/rigid_body_type.h"
+#include "talus/shape/convex_shape.h"
 
 namespace talus {
 
@@ -21,10 +23,57 @@ constexpr double kPi = std::numbers::pi;
 struct SpeciesInfo {
   std::string name;
   double density = 0;  ///< kg/m^3
-  double radius = 0;   ///< m, nominal
-  double mass() const { return density * 4.0 / 3.0 * kPi * radius * radius * radius; }
-  double inertia() const { return 0.4 * mass() * radius * radius; }
+  double radius = 0;   ///< m, nominal (bounding radius of a shaped species)
+  std::optional<RigidBodyType> body;  ///< set for non-spherical species
+  int shape_index = 0;
+  double mass() const { return body ? body->mass : density * 4.0 / 3.0 * kPi * radius * radius * radius; }
+  double inertia() const { return body ? body->inertia.x : 0.4 * mass() * radius * radius; }
+  // A particle of this species; spheres of radius r (the nominal radius when r = 0).
+  ParticleInit particle(const Vec3& x, const Quat& q, int index, double r = 0) const {
+    if (body) return rigid_particle(*body, shape_index, x, q, index);
+    ParticleInit p;
+    p.position = x;
+    p.orientation = q;
+    p.species = index;
+    p.radius = r > 0 ? r : radius;
+    p.mass = density * 4.0 / 3.0 * kPi * p.radius * p.radius * p.radius;
+    const double i = 0.4 * p.mass * p.radius * p.radius;
+    p.inertia = {i, i, i};
+    return p;
+  }
 };
+
+// [species.NAME] shape = "sphere" (radius), "box" (half_extents), "cross" (length, width,
+// thickness: Huet et al. 2021, Sec. III B); crust: the rounding of GJK's crust method.
+void read_shape(const ScenarioFile& f, const std::string& key, SpeciesInfo& s) {
+  const std::string shape = f.get_choice_or(key + ".shape", "sphere", {"sphere", "box", "cross"});
+  if (shape == "sphere") {
+    s.radius = f.get<double>(key + ".radius", io::positive);
+    return;
+  }
+  CompositeShape c;
+  if (shape == "box") {
+    const Vec3 h = f.get<Vec3>(key + ".half_extents", io::positive);
+    const double crust = f.get_or<double>(key + ".crust", 0.05 * std::min({h.x, h.y, h.z}), io::non_negative);
+    if (crust >= std::min({h.x, h.y, h.z})) f.fail(key + ".crust", "must be smaller than the smallest half extent");
+    c.add(make_box(h, crust), Pose{});
+  } else {
+    const double length = f.get_or<double>(key + ".length", 27e-3, io::positive);
+    const double width = f.get_or<double>(key + ".width", 2e-3, io::positive);
+    const double thickness = f.get_or<double>(key + ".thickness", 3e-3, io::positive);
+    const double crust = f.get_or<double>(key + ".crust", 0.05 * std::min(width, thickness), io::non_negative);
+    if (crust >= 0.5 * std::min(width, thickness)) f.fail(key + ".crust", "must be smaller than half the arm width and thickness");
+    c = make_huet_cross(length, width, thickness, crust);
+  }
+  s.body = make_rigid_body_type(c, s.density);
+  s.radius = s.body->radius;
+}
+
+Quat random_orientation(std::mt19937_64& rng) {
+  // Uniform on SO(3): a normalised 4D Gaussian.
+  std::normal_distribution<double> g(0, 1);
+  return Quat{g(rng), g(rng), g(rng), g(rng)}.normalized();
+}
 
 std::string indexed(const std::string& array, std::size_t k) { return array + "[" + std::to_string(k) + "]"; }
 
@@ -140,7 +189,11 @@ Scenario load_scenario(ScenarioFile& f) {
   }
   for (const std::string& name : f.table_keys("species")) {
     const std::string key = "species." + name;
-    species.push_back({name, f.get<double>(key + ".density", io::positive), f.get<double>(key + ".radius", io::positive)});
+    SpeciesInfo s;
+    s.name = name;
+    s.density = f.get<double>(key + ".density", io::positive);
+    read_shape(f, key, s);
+    species.push_back(s);
   }
   if (species.empty()) f.fail("species", "define at least one species, e.g. [species.glass] density = 2500, radius = 0.001");
   auto species_index = [&](const std::string& key) {
@@ -162,6 +215,7 @@ Scenario load_scenario(ScenarioFile& f) {
     chute_setup.model = ws.tangential_model;
   } else {
     ws.domain = read_domain(f);
+    ws.contact_manifold = f.get_or<bool>("contact.manifold", false);
     ws.gravity = f.get_or<Vec3>("domain.gravity", Vec3{0, 0, -9.81});
   }
 
@@ -225,8 +279,9 @@ Scenario load_scenario(ScenarioFile& f) {
     world = build_chute(chute_setup);
   } else {
     world = std::make_unique<World>(ws);
-    std::vector<std::string> unused;
     read_walls(f, *world, materials);
+    for (SpeciesInfo& s : species)
+      if (s.body) s.shape_index = world->add_shape(s.body->shape);
   }
   world->contacts() = table;
 
@@ -247,17 +302,20 @@ Scenario load_scenario(ScenarioFile& f) {
   for (std::size_t k = 0; k < explicit_count; ++k) {
     const std::string key = indexed("particles", k);
     const int s = species_index(key + ".species");
-    ParticleInit p;
-    p.species = s;
-    p.position = f.get<Vec3>(key + ".position");
-    if (!inside(p.position)) f.fail(key + ".position", "outside the domain");
+    const Vec3 position = f.get<Vec3>(key + ".position");
+    if (!inside(position)) f.fail(key + ".position", "outside the domain");
+    Quat q;
+    if (f.has(key + ".orientation")) {
+      const std::vector<double> v = f.get<std::vector<double>>(key + ".orientation");
+      if (v.size() != 4 || v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3] == 0)
+        f.fail(key + ".orientation", "expected a quaternion [w, x, y, z]");
+      q = Quat{v[0], v[1], v[2], v[3]}.normalized();
+    }
+    const double radius = species[s].body ? 0.0 : f.get_or<double>(key + ".radius", species[s].radius, io::positive);
+    ParticleInit p = species[s].particle(position, q, s, radius);
     p.velocity = f.get_or<Vec3>(key + ".velocity", Vec3{});
     p.angular_velocity = f.get_or<Vec3>(key + ".angular_velocity", Vec3{});
-    p.radius = f.get_or<double>(key + ".radius", species[s].radius, io::positive);
     p.fixed = f.get_or<bool>(key + ".fixed", false);
-    p.mass = species[s].density * 4.0 / 3.0 * kPi * p.radius * p.radius * p.radius;
-    const double inertia = 0.4 * p.mass * p.radius * p.radius;
-    p.inertia = {inertia, inertia, inertia};
     if (index.overlaps({p.position, p.radius})) f.fail(key + ".position", "overlaps another particle");
     index.insert({p.position, p.radius});
     world->add_particle(p);
@@ -287,14 +345,8 @@ Scenario load_scenario(ScenarioFile& f) {
     }
     for (std::size_t q = first; q < index.spheres().size(); ++q) {
       const PlacedSphere& sp = index.spheres()[q];
-      ParticleInit p;
-      p.species = s;
-      p.position = sp.centre;
+      ParticleInit p = species[s].particle(sp.centre, species[s].body ? random_orientation(rng) : Quat{}, s, sp.radius);
       p.velocity = velocity;
-      p.radius = sp.radius;
-      p.mass = species[s].density * 4.0 / 3.0 * kPi * p.radius * p.radius * p.radius;
-      const double inertia = 0.4 * p.mass * p.radius * p.radius;
-      p.inertia = {inertia, inertia, inertia};
       world->add_particle(p);
     }
   }
@@ -317,6 +369,11 @@ Scenario load_scenario(ScenarioFile& f) {
     p.radius_max = f.get_or<double>(key + ".radius_max", species[p.species].radius, io::positive);
     if (p.radius_max < p.radius_min) f.fail(key + ".radius_max", "must not be below radius_min");
     p.velocity = f.get_or<Vec3>(key + ".velocity", Vec3{});
+    if (species[p.species].body) {
+      p.rigid = true;
+      p.prototype = species[p.species].particle({}, {}, p.species);
+      p.radius_min = p.radius_max = species[p.species].radius;
+    }
     sc.pours.emplace_back(p, run.seed + 1000 + k);
   }
   if (world->particles().owned == 0) {
