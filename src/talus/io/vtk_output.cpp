@@ -1,0 +1,44 @@
+#include "talus/io/vtk_output.h"
+
+#include <cstdio>
+
+#include "talus/io/vtk_contacts.h"
+#include "talus/io/vtk_particles.h"
+#include "talus/io/vtk_walls.h"
+
+namespace talus::io {
+
+VtkOutput::VtkOutput(std::filesystem::path directory, std::vector<CompositeShape> shapes,
+                     MeshResolution resolution)
+    : directory_(std::move(directory)),
+      shapes_(std::move(shapes)),
+      resolution_(resolution),
+      particles_(directory_ / "particles.pvd"),
+      contacts_(directory_ / "contacts.pvd"),
+      walls_(directory_ / "walls.pvd") {
+  std::filesystem::create_directories(directory_);
+  if (!shapes_.empty()) shapes_series_.emplace(directory_ / "shapes.pvd");
+}
+
+std::filesystem::path VtkOutput::frame_file(const char* stem) const {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s_%06zu.vtu", stem, frames_);
+  return name;
+}
+
+void VtkOutput::write_frame(const Snapshot& snapshot, const std::vector<Wall>& walls) {
+  const double t = snapshot.time;
+  write_particles_vtu(directory_ / frame_file("particles"), snapshot);
+  particles_.add(t, frame_file("particles"));
+  if (shapes_series_) {
+    write_shapes_vtu(directory_ / frame_file("shapes"), snapshot, shapes_, resolution_);
+    shapes_series_->add(t, frame_file("shapes"));
+  }
+  write_contacts_vtu(directory_ / frame_file("contacts"), snapshot);
+  contacts_.add(t, frame_file("contacts"));
+  write_walls_vtu(directory_ / frame_file("walls"), walls, t, Aabb{snapshot.domain_min, snapshot.domain_max});
+  walls_.add(t, frame_file("walls"));
+  ++frames_;
+}
+
+}  // namespace talus::io

@@ -1,0 +1,46 @@
+#pragma once
+// VtkOutput: everything ParaView needs for a run, one call per frame. In `directory`:
+//   particles_NNNNNN.vtu  centres + particle data          (series particles.pvd)
+//   shapes_NNNNNN.vtu     surfaces of non-spherical shapes (series shapes.pvd; only when a
+//                         shape table is given)
+//   contacts_NNNNNN.vtu   contact network                  (series contacts.pvd)
+//   walls_NNNNNN.vtu      walls at the frame's time        (series walls.pvd)
+// NNNNNN counts frames from 0. Each .pvd is rewritten after its frame file is complete, so a
+// reader of the .pvd never meets a missing or partial frame. Open the four .pvd files in ParaView.
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "talus/analysis/snapshot.h"
+#include "talus/io/vtk_pvd.h"
+#include "talus/io/vtk_shape_mesh.h"
+#include "talus/shape/composite_shape.h"
+#include "talus/world/wall.h"
+
+namespace talus::io {
+
+class VtkOutput {
+ public:
+  // Creates `directory` if needed. `shapes` is the scenario's shape table, indexed by
+  // ParticleRecord::shape; empty means spheres only (no shapes_*.vtu).
+  explicit VtkOutput(std::filesystem::path directory, std::vector<CompositeShape> shapes = {},
+                     MeshResolution resolution = {});
+
+  // Writes one frame at snapshot.time; walls are clipped to the snapshot's domain.
+  void write_frame(const Snapshot& snapshot, const std::vector<Wall>& walls);
+
+  std::size_t frames() const { return frames_; }
+  const std::filesystem::path& directory() const { return directory_; }
+
+ private:
+  std::filesystem::path frame_file(const char* stem) const;
+
+  std::filesystem::path directory_;
+  std::vector<CompositeShape> shapes_;
+  MeshResolution resolution_;
+  PvdSeries particles_, contacts_, walls_;
+  std::optional<PvdSeries> shapes_series_;
+  std::size_t frames_ = 0;
+};
+
+}  // namespace talus::io
