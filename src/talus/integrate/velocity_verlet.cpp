@@ -2,9 +2,14 @@
 
 #include <algorithm>
 
+#include "talus/integrate/rigid_rotation.h"
 #include "talus/world/parallel.h"
 
 namespace talus {
+namespace {
+// Equal principal moments: omega and L are parallel and the free flow is a steady rotation.
+inline bool isotropic(const Vec3& inv_i) { return inv_i.x == inv_i.y && inv_i.y == inv_i.z; }
+}  // namespace
 
 void kick(ParticleStore& p, double h, const Vec3& gravity) {
   const std::size_t n = p.owned;
@@ -14,16 +19,12 @@ void kick(ParticleStore& p, double h, const Vec3& gravity) {
     if (inv_m == 0.0) continue;  // fixed particles: infinite mass, unaffected by gravity
     p.velocity[i] += h * (inv_m * p.force[i] + gravity);
     const Vec3 inv_i = p.inv_inertia[i];
-    if (inv_i.x == inv_i.y && inv_i.y == inv_i.z) {
+    if (isotropic(inv_i)) {
       p.angular_velocity[i] += (h * inv_i.x) * p.torque[i];
     } else {
-      // Euler's equations in the principal frame; the gyroscopic term is explicit here.
+      // L += h tau at fixed orientation; the gyroscopic term is in the drift's free flow.
       const Quat& q = p.orientation[i];
-      const Vec3 w = q.rotate_inverse(p.angular_velocity[i]);
-      const Vec3 t = q.rotate_inverse(p.torque[i]);
-      const Vec3 l{w.x / inv_i.x, w.y / inv_i.y, w.z / inv_i.z};
-      const Vec3 dw = hadamard(inv_i, t - cross(w, l)) * h;
-      p.angular_velocity[i] = q.rotate(w + dw);
+      p.angular_velocity[i] += h * q.rotate(hadamard(inv_i, q.rotate_inverse(p.torque[i])));
     }
   }
 }
@@ -36,10 +37,17 @@ double drift(ParticleStore& p, double dt, const std::vector<Vec3>& at_build) {
     if (p.inv_mass[i] == 0.0) continue;
     p.position[i] += dt * p.velocity[i];
     const Vec3 w = p.angular_velocity[i];
+    const Vec3 inv_i = p.inv_inertia[i];
     Quat& q = p.orientation[i];
-    const Quat dq = Quat{0, w.x, w.y, w.z} * q;
-    q = Quat{q.w + 0.5 * dt * dq.w, q.x + 0.5 * dt * dq.x, q.y + 0.5 * dt * dq.y, q.z + 0.5 * dt * dq.z}
-            .normalized();
+    if (isotropic(inv_i)) {
+      const Quat dq = Quat{0, w.x, w.y, w.z} * q;
+      q = Quat{q.w + 0.5 * dt * dq.w, q.x + 0.5 * dt * dq.x, q.y + 0.5 * dt * dq.y, q.z + 0.5 * dt * dq.z}
+              .normalized();
+    } else {
+      Vec3 l = body_momentum(q, inv_i, w);
+      free_rotation(q, l, inv_i, dt);
+      p.angular_velocity[i] = world_angular_velocity(q, inv_i, l);
+    }
     max_d2 = std::max(max_d2, norm2(p.position[i] - at_build[i]));
   }
   return max_d2;

@@ -1,16 +1,19 @@
 #pragma once
 // Velocity Verlet for translation and rotation (Weinhart et al. 2012, Appendix C, Alg. 1):
-// half kick, drift, forces, half kick.
+// half kick, drift, forces, half kick. Spheres (equal principal moments) turn with omega;
+// anisotropic bodies kick the angular momentum and drift by a splitting of the free rigid body
+// (rigid_rotation.h), so the gyroscopic term lives in the drift.
 #include <vector>
 
 #include "talus/body/particles.h"
 
 namespace talus {
 
-// v += h (F/m + g), omega += h I^-1 (tau - omega x I omega) for every owned mobile particle.
+// v += h (F/m + g) and L += h tau, i.e. omega += h R I^-1 R^T tau, for every owned mobile particle.
 void kick(ParticleStore& particles, double h, const Vec3& gravity);
 
-// x += dt v and q advanced by the angular velocity; returns the largest squared distance of an
+// x += dt v; q advanced by omega (spheres) or by the free rigid-body flow, which also turns
+// omega (anisotropic bodies); returns the largest squared distance of an
 // owned particle from its position at the last neighbour-list build.
 double drift(ParticleStore& particles, double dt, const std::vector<Vec3>& position_at_build);
 

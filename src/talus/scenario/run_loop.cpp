@@ -6,11 +6,13 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <optional>
 
 #include "talus/io/atomic_file.h"
 #include "talus/io/csv_writer.h"
 #include "talus/io/json_file.h"
 #include "talus/io/results_dir.h"
+#include "talus/io/vtk_output.h"
 
 namespace talus {
 
@@ -100,6 +102,15 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
 
   RunOutcome outcome{"end_time", 0};
   write_row(csv, world, world.diagnostics());
+  std::optional<io::VtkOutput> vtk;
+  double next_frame = world.time();
+  auto frame_due = [&] {
+    if (!vtk || world.time() < next_frame - 0.5 * world.settings().time_step) return;
+    vtk->write_frame(world.snapshot(), world.walls());
+    next_frame += run.vtk_interval;
+  };
+  if (run.vtk_interval > 0) vtk.emplace(opt.out / "vtk", world.shapes());
+  frame_due();
   double next_output = world.time() + run.output_interval;
   const double dt = world.settings().time_step;
   while (world.time() < run.end_time - 0.5 * dt) {
@@ -114,6 +125,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
         break;
       }
     }
+    frame_due();
     if (g_stop_requested) {
       outcome.stop_reason = "interrupted";
       break;

@@ -175,6 +175,7 @@ Scenario load_scenario(ScenarioFile& f) {
   run.seed = static_cast<std::uint64_t>(f.get_or<std::int64_t>("run.seed", 1, io::non_negative));
   if (f.has("run.stop_kinetic_energy")) run.stop_kinetic_energy = f.get<double>("run.stop_kinetic_energy", io::positive);
   run.stop_min_time = f.get_or<double>("run.stop_min_time", 0.0, io::non_negative);
+  run.vtk_interval = f.get_or<double>("run.vtk_interval", 0.0, io::non_negative);
   const double steps_per_contact = f.get_or<double>("run.steps_per_contact", 50, io::in_range(10, 1e9));
 
   WorldSettings ws;

@@ -19,6 +19,7 @@ struct RunControl {
   double output_interval = 0;                ///< s between time-series rows
   std::optional<double> stop_kinetic_energy; ///< J: stop once E_kin falls below, after stop_min_time
   double stop_min_time = 0;                  ///< s
+  double vtk_interval = 0;                   ///< s between ParaView frames; 0: none
   std::uint64_t seed = 1;
 };
 
