@@ -1,2 +1,288 @@
-int quick_main(int, char**);
-int main(int argc, char** argv) { return quick_main(argc, argv); }
+// talus-bench: the chute benchmark of the project (Weinhart et al. 2012, Sect. 5 chute, flowing
+// state), one line per figure: `METRIC <name> <value> <unit>`.
+//
+//   talus-bench [--quick] [--cache DIR] [--only chute4k|chute32k]
+//               [--steps4k N] [--steps32k N] [--warmup N] [--reps N] [--flow-time T] [--gen-threads N]
+//   talus-bench --micro [--benchmark_filter=...]     Google Benchmark kernels instead
+//
+// Cases: chute4k = 20 x 10, H = 20 (4000 flowing on the rough base), chute32k = 40 x 40, H = 20
+// (32,000 flowing); both at 24 deg, lambda = 1, Weinhart contact, dt = t_c/50, flowed for 10
+// time units (--flow-time) once and cached in DIR (default <dir of this executable>/bench-cache/). --quick
+// replaces both by 20 x 10, H = 10 chutes flowed 1 time unit, with small step counts (CI smoke).
+//
+// Definitions:
+//  - "particles" are all owned particles, flowing + fixed base: the figure per particle-step
+//    divides by that count, as LAMMPS's does (its 32,000 include the frozen base).
+//  - X_1t, X_2t: microseconds per particle per step on 1 and 2 OpenMP threads, fastest of
+//    --reps repetitions of N steps, after a --warmup (contact memory is not cached).
+//  - X_1t_cpu: as X_1t with the process CPU time instead of wall time: what 1 thread costs
+//    when other jobs keep it waiting for a core (compare with loadavg).
+//  - contacts_per_particle = 2 contacts / particles, the mean coordination number.
+//  - neighbors_per_particle = half-list entries (each pair once, skin included) / particles.
+//  - rebuild_interval = timed steps / neighbour-list rebuilds.
+//  - share_*: fraction of the 1-thread wall time in each World::timer() phase; "other" is the
+//    rest (ghost refresh, force folding, loop overhead).
+//  - chute32k_bytes_per_particle: peak resident memory (VmHWM) minus resident memory before
+//    the world is built, per particle, measured in a fresh process (this executable re-run
+//    with --memory-probe) that only loads the 32k world from the cache and runs it on 2
+//    threads; the OpenMP pool is started before the baseline. chute32k_peak_rss is that
+//    process's whole VmHWM, comparable with LAMMPS's resident size.
+//  - loadavg: the 1-minute load average after the timings (2 cores: above ~1 means the
+//    2-thread figures competed with other jobs).
+//  - threads_identical: 1 if the positions after warm-up + timed steps on 1 and on 2 threads
+//    are bitwise identical.
+#include <benchmark/benchmark.h>
+#include <omp.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "chute_state.h"
+#include "chute_timing.h"
+#include "proc_memory.h"
+
+namespace fs = std::filesystem;
+using namespace talus;
+using namespace talus::bench;
+
+namespace {
+
+struct Options {
+  bool quick = false;
+  fs::path cache;
+  std::string only;                ///< empty: every case
+  std::uint64_t steps4k = 2000, steps32k = 500, warmup = 200;
+  int reps = 3;
+  double flow_time = 0;            ///< sqrt(d/g), age of the cached flowing state; 0: 10 (1 with --quick)
+  int gen_threads = 0;             ///< threads for cache generation; 0: omp_get_max_threads()
+  std::string probe;               ///< internal: run the memory probe of this case and exit
+};
+
+void usage() {
+  std::fprintf(stderr,
+               "usage: talus-bench [--quick] [--cache DIR] [--only chute4k|chute32k] [--steps4k N] [--steps32k N]\n"
+               "                   [--warmup N] [--reps N] [--flow-time T] [--gen-threads N]\n"
+               "       talus-bench --micro [Google Benchmark flags]\n");
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  bool steps4k_set = false, steps32k_set = false, warmup_set = false, reps_set = false;
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    auto value = [&]() -> std::string {
+      if (k + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+      return argv[++k];
+    };
+    if (a == "--quick") o.quick = true;
+    else if (a == "--cache") o.cache = value();
+    else if (a == "--only") o.only = value();
+    else if (a == "--steps4k") { o.steps4k = std::stoull(value()); steps4k_set = true; }
+    else if (a == "--steps32k") { o.steps32k = std::stoull(value()); steps32k_set = true; }
+    else if (a == "--warmup") { o.warmup = std::stoull(value()); warmup_set = true; }
+    else if (a == "--reps") { o.reps = std::stoi(value()); reps_set = true; }
+    else if (a == "--flow-time") o.flow_time = std::stod(value());
+    else if (a == "--gen-threads") o.gen_threads = std::stoi(value());
+    else if (a == "--memory-probe") o.probe = value();
+    else if (a == "--help" || a == "-h") { usage(); std::exit(0); }
+    else throw std::invalid_argument("unknown argument " + a);
+  }
+  if (!o.only.empty() && o.only != "chute4k" && o.only != "chute32k")
+    throw std::invalid_argument("--only takes chute4k or chute32k");
+  if (o.reps < 1) throw std::invalid_argument("--reps must be at least 1");
+  if (o.flow_time <= 0) o.flow_time = o.quick ? 1 : 10;
+  if (o.gen_threads <= 0) o.gen_threads = omp_get_max_threads();
+  if (o.quick) {
+    if (!steps4k_set) o.steps4k = 200;
+    if (!steps32k_set) o.steps32k = 200;
+    if (!warmup_set) o.warmup = 50;
+    if (!reps_set) o.reps = 1;
+  }
+  if (o.cache.empty()) o.cache = fs::read_symlink("/proc/self/exe").parent_path() / "bench-cache";
+  return o;
+}
+
+std::vector<ChuteCase> cases(const Options& o) {
+  std::vector<ChuteCase> all;
+  if (o.quick) {
+    all.push_back(make_case("chute4k", 20, 10, 10, o.flow_time));
+    all.push_back(make_case("chute32k", 20, 10, 10, o.flow_time));
+  } else {
+    all.push_back(make_case("chute4k", 20, 10, 20, o.flow_time));
+    all.push_back(make_case("chute32k", 40, 40, 20, o.flow_time));
+  }
+  std::vector<ChuteCase> chosen;
+  for (const ChuteCase& c : all)
+    if (o.only.empty() || o.only == c.name) chosen.push_back(c);
+  return chosen;
+}
+
+std::uint64_t steps_of(const Options& o, const ChuteCase& c) { return c.name == "chute4k" ? o.steps4k : o.steps32k; }
+
+// 1-minute load average: other jobs on the machine inflate the timings, the 2-thread ones most.
+double load_average() {
+  double l = 0;
+  if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(f, "%lf", &l) != 1) l = 0;
+    std::fclose(f);
+  }
+  return l;
+}
+
+void metric(const std::string& name, double value, const char* unit) {
+  std::printf("METRIC %s %.6g %s\n", name.c_str(), value, unit);
+  std::fflush(stdout);
+}
+
+// --- peak memory, in a fresh process --------------------------------------------------------
+
+constexpr int kProbeThreads = 2;
+
+// Child side: prints "PROBE <rss before KiB> <VmHWM after KiB> <engine bytes> <particles>".
+int memory_probe(const Options& o) {
+  Options every = o;
+  every.only.clear();
+  const std::vector<ChuteCase> all = cases(every);
+  const ChuteCase* c = nullptr;
+  for (const ChuteCase& k : all)
+    if (k.name == o.probe) c = &k;
+  if (!c) throw std::invalid_argument("unknown probe case " + o.probe);
+  omp_set_num_threads(kProbeThreads);
+#pragma omp parallel
+  { benchmark::DoNotOptimize(omp_get_thread_num()); }  // start the thread pool before the baseline
+  reset_peak_resident();
+  const std::size_t before = resident_kib();
+  auto world = load_state(*c, cache_path(o.cache, *c));
+  world->run(o.warmup + steps_of(o, *c));
+  const std::size_t peak = peak_resident_kib();
+  std::printf("PROBE %zu %zu %zu %zu\n", before, peak, world->memory_bytes(), world->owned_count());
+  return 0;
+}
+
+struct ProbeResult {
+  std::size_t rss_before_kib = 0, peak_kib = 0, engine_bytes = 0, particles = 0;
+};
+
+// Parent side: re-runs this executable with the same arguments and --memory-probe.
+ProbeResult run_memory_probe(int argc, char** argv, const std::string& name) {
+  std::vector<std::string> args(argv, argv + argc);
+  args.push_back("--memory-probe");
+  args.push_back(name);
+  std::vector<char*> cargs;
+  for (std::string& s : args) cargs.push_back(s.data());
+  cargs.push_back(nullptr);
+
+  int fd[2];
+  if (pipe(fd) != 0) throw std::runtime_error("pipe failed");
+  std::fflush(stdout);
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    close(fd[0]);
+    dup2(fd[1], STDOUT_FILENO);
+    close(fd[1]);
+    execv("/proc/self/exe", cargs.data());
+    _exit(127);
+  }
+  close(fd[1]);
+  std::string out;
+  char buf[256];
+  for (ssize_t n; (n = read(fd[0], buf, sizeof buf)) > 0;) out.append(buf, static_cast<std::size_t>(n));
+  close(fd[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ProbeResult r;
+  const std::size_t at = out.find("PROBE ");
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || at == std::string::npos ||
+      std::sscanf(out.c_str() + at, "PROBE %zu %zu %zu %zu", &r.rss_before_kib, &r.peak_kib, &r.engine_bytes,
+                  &r.particles) != 4)
+    throw std::runtime_error("memory probe failed: " + out);
+  return r;
+}
+
+// --- the benchmark ---------------------------------------------------------------------------
+
+void run_case(const ChuteCase& c, const Options& o) {
+  const fs::path file = cache_path(o.cache, c);
+  TimingOptions t;
+  t.warmup = o.warmup;
+  t.steps = steps_of(o, c);
+  t.repetitions = o.reps;
+  t.threads = 1;
+  const TimingResult one = time_chute(c, file, t);
+  t.threads = 2;
+  const TimingResult two = time_chute(c, file, t);
+
+  const std::string& x = c.name;
+  const double n = static_cast<double>(one.particles);
+  metric(x + "_particles", n, "count");
+  metric(x + "_base_particles", static_cast<double>(one.fixed), "count");
+  metric(x + "_1t", one.us_per_particle_step, "us");
+  metric(x + "_2t", two.us_per_particle_step, "us");
+  metric(x + "_1t_cpu", one.us_cpu, "us");
+  metric(x + "_speedup_2t", one.us_per_particle_step / two.us_per_particle_step, "x");
+  metric(x + "_contacts_per_particle", 2.0 * static_cast<double>(one.contacts) / n, "count");
+  metric(x + "_neighbors_per_particle", static_cast<double>(one.pair_entries) / n, "count");
+  metric(x + "_rebuild_interval",
+         one.rebuilds ? static_cast<double>(one.steps) / static_cast<double>(one.rebuilds) : 0.0, "steps");
+  const char* phase[4] = {"integrate", "neighbors", "pair_forces", "wall_forces"};
+  double accounted = 0;
+  for (int k = 0; k < 4; ++k) {
+    metric(x + "_share_" + phase[k], 100 * one.phase_seconds[k] / one.seconds, "%");
+    accounted += one.phase_seconds[k];
+  }
+  metric(x + "_share_other", 100 * (one.seconds - accounted) / one.seconds, "%");
+  metric(x + "_mean_speed", one.mean_speed, "sqrt(gd)");
+  const bool identical = one.position_by_gid.size() == two.position_by_gid.size() &&
+                         std::memcmp(one.position_by_gid.data(), two.position_by_gid.data(),
+                                     one.position_by_gid.size() * sizeof(Vec3)) == 0;
+  metric(x + "_threads_identical", identical ? 1 : 0, "bool");
+  metric(x + "_loadavg", load_average(), "load");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc > 1 && std::strcmp(argv[1], "--micro") == 0) {
+      argv[1] = argv[0];  // hand the rest to Google Benchmark
+      int n = argc - 1;
+      benchmark::Initialize(&n, argv + 1);
+      if (benchmark::ReportUnrecognizedArguments(n, argv + 1)) return 1;
+      benchmark::RunSpecifiedBenchmarks();
+      benchmark::Shutdown();
+      return 0;
+    }
+    const Options o = parse(argc, argv);
+    if (!o.probe.empty()) return memory_probe(o);
+
+    const std::vector<ChuteCase> chosen = cases(o);
+    if (o.quick) metric("quick", 1, "bool");
+    for (const ChuteCase& c : chosen) {  // generate missing caches first, outside every measurement
+      double seconds = 0;
+      load_or_generate(c, o.cache, o.gen_threads, &seconds);
+      if (seconds > 0) std::fprintf(stderr, "[%s] cache generated in %.0f s\n", c.name.c_str(), seconds);
+    }
+    for (const ChuteCase& c : chosen) {
+      if (c.name == "chute32k") {
+        const ProbeResult p = run_memory_probe(argc, argv, c.name);
+        const double n = static_cast<double>(p.particles);
+        metric("chute32k_bytes_per_particle", 1024.0 * static_cast<double>(p.peak_kib - p.rss_before_kib) / n, "B");
+        metric("chute32k_engine_bytes_per_particle", static_cast<double>(p.engine_bytes) / n, "B");
+        metric("chute32k_peak_rss", static_cast<double>(p.peak_kib) / 1024.0, "MiB");
+      }
+      run_case(c, o);
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "talus-bench: %s\n", e.what());
+    usage();
+    return 1;
+  }
+}

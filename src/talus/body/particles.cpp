@@ -27,6 +27,22 @@ void ParticleStore::resize(std::size_t n) {
   gid.resize(n);
 }
 
+void ParticleStore::reserve(std::size_t n) {
+  position.reserve(n);
+  velocity.reserve(n);
+  angular_velocity.reserve(n);
+  force.reserve(n);
+  torque.reserve(n);
+  orientation.reserve(n);
+  radius.reserve(n);
+  inv_mass.reserve(n);
+  inv_inertia.reserve(n);
+  mass.reserve(n);
+  species.reserve(n);
+  shape.reserve(n);
+  gid.reserve(n);
+}
+
 void ParticleStore::permute_owned(const std::vector<std::uint32_t>& order) {
   resize(owned);
   permute(position, order);

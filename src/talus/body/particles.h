@@ -33,6 +33,7 @@ struct ParticleStore {
   bool is_fixed(std::size_t i) const { return inv_mass[i] == 0.0; }
 
   void resize(std::size_t n);
+  void reserve(std::size_t n);  ///< exact capacity, so that ghosts appended later do not double the arrays
   // Reorders the owned particles so that new index k holds old index order[k]; drops ghosts.
   void permute_owned(const std::vector<std::uint32_t>& order);
   // Appends a ghost copy of owned particle `owner` shifted by `shift`.

@@ -40,9 +40,12 @@ double drift(ParticleStore& p, double dt, const std::vector<Vec3>& at_build) {
     const Vec3 inv_i = p.inv_inertia[i];
     Quat& q = p.orientation[i];
     if (isotropic(inv_i)) {
-      const Quat dq = Quat{0, w.x, w.y, w.z} * q;
-      q = Quat{q.w + 0.5 * dt * dq.w, q.x + 0.5 * dt * dq.x, q.y + 0.5 * dt * dq.y, q.z + 0.5 * dt * dq.z}
-              .normalized();
+      // A sphere's orientation plays no part in its dynamics: only shaped bodies track it.
+      // Free rotation of an isotropic body is a steady turn about omega.
+      if (p.shape[i] != 0) {
+        const double angle = norm(w) * dt;
+        if (angle > 0) q = (Quat::from_axis_angle(w, angle) * q).normalized();
+      }
     } else {
       Vec3 l = body_momentum(q, inv_i, w);
       free_rotation(q, l, inv_i, dt);

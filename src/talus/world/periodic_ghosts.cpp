@@ -6,29 +6,36 @@ void PeriodicGhosts::create(ParticleStore& p, const Domain& domain, const CellGr
                             std::vector<CellCoord>& cell_of) {
   owner_.clear();
   shift_.clear();
+  // First list the images (images of earlier images make the corners), then append them all
+  // at once with exact capacity.
+  std::vector<Vec3> image_position;
   for (int a = 0; a < 3; ++a) {
     if (!domain.periodic[a]) continue;
     const double length = domain.length(a);
-    const std::size_t n = p.size();  // images of earlier ghosts make the corner images
+    const std::size_t n = p.owned + owner_.size();
     for (std::size_t k = 0; k < n; ++k) {
       const bool is_ghost = k >= p.owned;
       const std::uint32_t origin = is_ghost ? owner_[k - p.owned] : static_cast<std::uint32_t>(k);
       const Vec3 base_shift = is_ghost ? shift_[k - p.owned] : Vec3{};
+      const Vec3 x = is_ghost ? image_position[k - p.owned] : p.position[k];
       for (int side = -1; side <= 1; side += 2) {
-        const double x = p.position[k][a];
-        const bool near = side > 0 ? (x - domain.lo[a] < band) : (domain.hi[a] - x < band);
+        const bool near = side > 0 ? (x[a] - domain.lo[a] < band) : (domain.hi[a] - x[a] < band);
         if (!near) continue;
         Vec3 shift = base_shift;
         shift[a] += side * length;
         CellCoord c = cell_of[k];
         c[a] += side * grid.cells(a);
-        p.push_ghost(origin, shift);
-        p.position.back() = p.position[origin] + shift;
         owner_.push_back(origin);
         shift_.push_back(shift);
+        image_position.push_back(p.position[origin] + shift);
         cell_of.push_back(c);
       }
     }
+  }
+  p.reserve(p.owned + owner_.size());
+  for (std::size_t g = 0; g < owner_.size(); ++g) {
+    p.push_ghost(owner_[g], shift_[g]);
+    p.position.back() = image_position[g];
   }
 }
 

@@ -1,0 +1,43 @@
+#pragma once
+// The benchmark's flowing chute states: a World rebuilt from a cached particle state, and the
+// small versioned binary file that holds one. Contact memory is not cached: a benchmark warms
+// the loaded world up for a few hundred steps before it times anything.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "talus/scenario/chute.h"
+#include "talus/world/world.h"
+
+namespace talus::bench {
+
+// One benchmark chute: the Weinhart et al. 2012 Sect. 5 set-up, flowed for `flow_time`.
+struct ChuteCase {
+  std::string name;         ///< METRIC prefix, e.g. "chute4k"
+  ChuteSetup setup;
+  double flow_time = 10;    ///< sqrt(d/g), how long the cached state has flowed down the slope
+};
+
+// The case's chute: Weinhart contact for flow-flow and flow-base, `length` x `width`, H, theta.
+ChuteCase make_case(const std::string& name, double length, double width, double fill_height, double flow_time);
+
+// An empty World with the settings and contact table that build_chute(s) gives its world.
+// Duplicates the first lines of build_chute (src/talus/scenario/chute.cpp); keep in step.
+std::unique_ptr<World> make_empty_chute_world(const ChuteSetup& s);
+
+// Cache file of a case, keyed by every set-up parameter (a hash covers the contact law).
+std::filesystem::path cache_path(const std::filesystem::path& dir, const ChuteCase& c);
+
+// Writes the owned particles of `world` (in global-id order) and its time, atomically.
+void save_state(const World& world, const std::filesystem::path& file);
+// A world rebuilt from `file` with make_empty_chute_world(c.setup); throws if the file is
+// missing, of another version, or corrupt.
+std::unique_ptr<World> load_state(const ChuteCase& c, const std::filesystem::path& file);
+
+// The cached world of a case, generating the cache first if needed (build_chute, then run
+// until t = flow_time on `threads` OpenMP threads; progress goes to stderr).
+std::unique_ptr<World> load_or_generate(const ChuteCase& c, const std::filesystem::path& dir, int threads,
+                                        double* seconds_generating);
+
+}  // namespace talus::bench

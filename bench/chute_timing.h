@@ -1,0 +1,38 @@
+#pragma once
+// Times a cached chute state on a given number of OpenMP threads.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "chute_state.h"
+
+namespace talus::bench {
+
+struct TimingOptions {
+  int threads = 1;
+  std::uint64_t warmup = 200;  ///< steps after loading, untimed: rebuilds the contact memory
+  std::uint64_t steps = 2000;  ///< steps per timed repetition
+  int repetitions = 3;         ///< the fastest repetition is reported (other jobs share the machine)
+};
+
+struct TimingResult {
+  std::size_t particles = 0;       ///< owned particles, flowing + fixed base
+  std::size_t fixed = 0;           ///< base particles
+  double us_per_particle_step = 0; ///< microseconds, fastest repetition / (steps * particles)
+  double us_mean = 0;              ///< same, mean over the repetitions
+  double us_cpu = 0;               ///< same with process CPU time (all threads) instead of wall time, fastest repetition
+  std::array<double, 4> phase_seconds{};  ///< integrate, neighbors, pair_forces, wall_forces, all repetitions
+  double seconds = 0;              ///< wall time of all repetitions
+  std::uint64_t steps = 0;         ///< timed steps, all repetitions
+  std::uint64_t rebuilds = 0;      ///< neighbour-list rebuilds during the timed steps
+  std::size_t contacts = 0;        ///< particle-particle contacts at the end
+  std::size_t pair_entries = 0;    ///< half-list entries at the end
+  std::size_t engine_bytes = 0;    ///< World::memory_bytes() at the end
+  double mean_speed = 0;           ///< of the flowing particles at the end, sqrt(g d)
+  std::vector<Vec3> position_by_gid;  ///< final positions, for the cross-thread comparison
+};
+
+TimingResult time_chute(const ChuteCase& c, const std::filesystem::path& cache_file, const TimingOptions& o);
+
+}  // namespace talus::bench
