@@ -110,6 +110,17 @@ TEST(ScenarioErrors, BadOverrideNamesTheOption) {
   EXPECT_EQ(e.rfind("--set contact.normal_stiffness: must be positive", 0), 0u) << e;
 }
 
+TEST(ScenarioErrors, BoxHasSixInwardUnitWalls) {
+  io::ScenarioFile f = io::ScenarioFile::from_string(
+      replace(kValid, "[species.glass]", "[box]\nlo = [-1.0, -1.0, -1.0]\nhi = [1.0, 1.0, 1.0]\n\n[species.glass]"), "case.toml");
+  const Scenario s = load_scenario(f);
+  ASSERT_EQ(s.world->walls().size(), 6u);
+  for (const Wall& w : s.world->walls()) {
+    EXPECT_DOUBLE_EQ(norm(w.normal), 1.0) << w.name;
+    EXPECT_DOUBLE_EQ(dot(w.normal, Vec3{} - w.origin), 1.0) << w.name;  // the centre is 1 m inside every wall
+  }
+}
+
 TEST(ScenarioErrors, OverrideAppliesToTheRun) {
   io::ScenarioFile f = io::ScenarioFile::from_string(kValid, "case.toml");
   f.set_override("run.end_time=0.5");

@@ -133,6 +133,7 @@ void read_walls(const ScenarioFile& f, World& world, std::vector<std::string>& m
       if (k == 5 && open_top) continue;
       Wall w;
       w.name = names[k];
+      w.normal = {};
       const int axis = k / 2;
       w.normal[axis] = (k % 2 == 0) ? 1 : -1;
       w.origin[axis] = (k % 2 == 0) ? lo[axis] : hi[axis];
