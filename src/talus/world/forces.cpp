@@ -8,8 +8,12 @@ namespace talus {
 
 void World::compute_forces(double memory_dt) {
   ParticleStore& p = particles_;
-  std::fill(p.force.begin(), p.force.end(), Vec3{});
-  std::fill(p.torque.begin(), p.torque.end(), Vec3{});
+  const long n = static_cast<long>(p.size());
+#pragma omp parallel for schedule(static) if (worth_parallel(p.size()))
+  for (long i = 0; i < n; ++i) {
+    p.force[i] = {};
+    p.torque[i] = {};
+  }
   switch (settings_.tangential_model) {
     case TangentialModel::memory: pair_forces<TangentialModel::memory>(memory_dt); break;
     case TangentialModel::memoryless: pair_forces<TangentialModel::memoryless>(memory_dt); break;

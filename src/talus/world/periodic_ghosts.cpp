@@ -1,5 +1,7 @@
 #include "talus/world/periodic_ghosts.h"
 
+#include "talus/world/parallel.h"
+
 namespace talus {
 
 void PeriodicGhosts::create(ParticleStore& p, const Domain& domain, const CellGrid& grid, double band,
@@ -40,7 +42,9 @@ void PeriodicGhosts::create(ParticleStore& p, const Domain& domain, const CellGr
 }
 
 void PeriodicGhosts::update_positions(ParticleStore& p) const {
-  for (std::size_t g = 0; g < owner_.size(); ++g) {
+  const long n = static_cast<long>(owner_.size());
+#pragma omp parallel for schedule(static) if (worth_parallel(owner_.size()))
+  for (long g = 0; g < n; ++g) {
     const std::size_t k = p.owned + g;
     p.position[k] = p.position[owner_[g]] + shift_[g];
     p.orientation[k] = p.orientation[owner_[g]];
@@ -48,7 +52,9 @@ void PeriodicGhosts::update_positions(ParticleStore& p) const {
 }
 
 void PeriodicGhosts::update_velocities(ParticleStore& p) const {
-  for (std::size_t g = 0; g < owner_.size(); ++g) {
+  const long n = static_cast<long>(owner_.size());
+#pragma omp parallel for schedule(static) if (worth_parallel(owner_.size()))
+  for (long g = 0; g < n; ++g) {
     const std::size_t k = p.owned + g;
     p.velocity[k] = p.velocity[owner_[g]];
     p.angular_velocity[k] = p.angular_velocity[owner_[g]];

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "talus/integrate/velocity_verlet.h"
+#include "talus/world/parallel.h"
 
 namespace talus {
 
@@ -117,13 +118,18 @@ void World::rebuild() {
   // Sort owned particles by cell, slab axis slowest: slabs become contiguous and neighbours close in memory.
   std::vector<CellCoord> cell_of(p.owned);
   std::vector<std::int64_t> key(p.owned);
-  for (std::size_t i = 0; i < p.owned; ++i) {
+  const long owned = static_cast<long>(p.owned);
+#pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
+  for (long i = 0; i < owned; ++i) {
     cell_of[i] = grid_.coord_of(p.position[i]);
     key[i] = grid_.linear(cell_of[i]);
   }
+  // Stable counting sort by cell.
+  std::vector<std::uint32_t> start(grid_.linear_size() + 1, 0);
+  for (long i = 0; i < owned; ++i) ++start[key[i] + 1];
+  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
   std::vector<std::uint32_t> order(p.owned);
-  for (std::size_t i = 0; i < p.owned; ++i) order[i] = static_cast<std::uint32_t>(i);
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+  for (long i = 0; i < owned; ++i) order[start[key[i]]++] = static_cast<std::uint32_t>(i);
 
   p.permute_owned(order);
   {
