@@ -29,9 +29,19 @@ void closest_segments(const Vec3& p, const Vec3& u, double hp, const Vec3& q, co
 
 }  // namespace
 
+// Columns of the rotation matrix of q: the body axes in the world frame.
+void rotation_axes(const Quat& q, Vec3 axes[3]) {
+  const double xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z, xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z,
+               wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
+  axes[0] = {1 - 2 * (yy + zz), 2 * (xy + wz), 2 * (xz - wy)};
+  axes[1] = {2 * (xy - wz), 1 - 2 * (xx + zz), 2 * (yz + wx)};
+  axes[2] = {2 * (xz + wy), 2 * (yz - wx), 1 - 2 * (xx + yy)};
+}
+
 BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, int warm_axis) {
   Vec3 A[3], B[3];
-  for (int k = 0; k < 3; ++k) A[k] = axis_of(pa, k), B[k] = axis_of(pb, k);
+  rotation_axes(pa.orientation, A);
+  rotation_axes(pb.orientation, B);
   double R[3][3], AbsR[3][3];
   // The small bias keeps nearly parallel edge pairs (degenerate cross products) from winning.
   constexpr double kBias = 1e-12;
@@ -43,11 +53,22 @@ BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose
   double overlap[15];
   Vec3 normal[15];  // world, from B to A
   bool valid[15];
+  // Most part pairs in a pile are apart: return at the first separating face axis. The gap
+  // reported is then a lower bound of the distance, not the largest one.
+  auto separated_by = [&](int k) {
+    BoxBoxSat r;
+    r.separated = true;
+    r.depth = overlap[k];
+    r.normal = normal[k];
+    r.axis = k;
+    return r;
+  };
   for (int i = 0; i < 3; ++i) {
     const double rb = hb[0] * AbsR[i][0] + hb[1] * AbsR[i][1] + hb[2] * AbsR[i][2];
     overlap[i] = ha[i] + rb - std::abs(t[i]);
     normal[i] = t[i] > 0 ? -A[i] : A[i];
     valid[i] = true;
+    if (overlap[i] < 0) return separated_by(i);
   }
   for (int j = 0; j < 3; ++j) {
     const double ra = ha[0] * AbsR[0][j] + ha[1] * AbsR[1][j] + ha[2] * AbsR[2][j];
@@ -55,6 +76,7 @@ BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose
     overlap[3 + j] = ra + hb[j] - std::abs(tj);
     normal[3 + j] = tj > 0 ? -B[j] : B[j];
     valid[3 + j] = true;
+    if (overlap[3 + j] < 0) return separated_by(3 + j);
   }
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
