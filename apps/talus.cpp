@@ -1,6 +1,8 @@
 // The talus command line: run, check and params.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <iostream>
 
@@ -39,6 +41,19 @@ int command_run(const std::string& path, const std::vector<std::string>& overrid
   return outcome.stop_reason == "interrupted" ? 130 : 0;
 }
 
+// The figures are drawn by the project's matplotlib scripts (Debian python3-matplotlib).
+int run_tool(const std::string& script, std::vector<std::string> args) {
+  const std::string path = std::string(TALUS_TOOLS_DIR) + "/" + script;
+  args.insert(args.begin(), {"/usr/bin/python3", path});
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::fflush(stdout);
+  execv(argv[0], argv.data());
+  std::perror("talus: cannot start /usr/bin/python3");
+  return 1;
+}
+
 int command_check(const std::string& path, const std::vector<std::string>& overrides) {
   io::ScenarioFile file = open_scenario(path, overrides);
   Scenario scenario = load_scenario(file);
@@ -69,6 +84,16 @@ int main(int argc, char** argv) {
   check->add_option("file", path, "Scenario file (TOML)")->required();
   check->add_option("--set", overrides, "Override a scenario value: --set key=value (repeatable)");
 
+  std::string view = "side", picture;
+  double render_time = -1;
+  CLI::App* render = app.add_subcommand("render", "Draw a results folder's configuration as a PNG (needs run.vtk_interval)");
+  render->add_option("dir", path, "Results folder")->required();
+  render->add_option("--time", render_time, "Simulated time (s); default: the last frame");
+  render->add_option("--view", view, "side (x-z) or top (x-y)")->check(CLI::IsMember({"side", "top"}));
+  render->add_option("--out", picture, "PNG file (default: DIR/render_<view>_<time>.png)");
+  CLI::App* plot = app.add_subcommand("plot", "Plot a results folder's energies and speeds (DIR/energies.png)");
+  plot->add_option("dir", path, "Results folder")->required();
+
   CLI::App* params = app.add_subcommand("params", "Contact parameters from material targets");
   params->require_subcommand(1);
   double mass = 1, v_max = 1, delta_max = 0, e_n = 0.5, e_t = 0, kn = 0, gamma = 0, radius = 0;
@@ -96,6 +121,13 @@ int main(int argc, char** argv) {
   try {
     if (*run) return command_run(path, overrides, out, overwrite, quiet, threads);
     if (*check) return command_check(path, overrides);
+    if (*plot) return run_tool("plot_timeseries.py", {path});
+    if (*render) {
+      std::vector<std::string> args = {path, "--view", view};
+      if (render_time >= 0) args.insert(args.end(), {"--time", std::to_string(render_time)});
+      if (!picture.empty()) args.insert(args.end(), {"--out", picture});
+      return run_tool("render.py", args);
+    }
     if (*huet) {
       const double m = 0.5 * mass;
       const double k = params::normal_stiffness_for_overlap(m, v_max, delta_max, e_n);

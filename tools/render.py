@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Draws a run's configuration at a chosen time as a PNG, seen from the side (x-z) or from the
+top (x-y): true particle surfaces (shapes.vtu) or discs (spheres), coloured by speed.
+
+Usage: render.py RESULTS_DIR [--time T] [--view side|top] [--out FILE.png]
+Reads RESULTS_DIR/vtk/*.pvd (written when the scenario sets run.vtk_interval)."""
+import argparse
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.collections import PatchCollection, PolyCollection
+from matplotlib.patches import Circle
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+
+def frame(pvd: Path, time: float):
+    """The series file closest to `time` and its time."""
+    entries = [(float(d.get("timestep")), pvd.parent / d.get("file")) for d in ET.parse(pvd).getroot().iter("DataSet")]
+    if not entries:
+        sys.exit(f"render: {pvd} has no frames")
+    if time == float("inf"):
+        return entries[-1]
+    return min(entries, key=lambda e: abs(e[0] - time))
+
+
+def read(path: Path):
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    return reader.GetOutput()
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("results")
+    parser.add_argument("--time", type=float, default=float("inf"))
+    parser.add_argument("--view", choices=["side", "top"], default="side")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    vtk_dir = Path(args.results) / "vtk"
+    if not (vtk_dir / "particles.pvd").exists():
+        sys.exit(f"render: no {vtk_dir}/particles.pvd (set run.vtk_interval in the scenario)")
+    t, particles_file = frame(vtk_dir / "particles.pvd", args.time)
+    axes = (0, 2) if args.view == "side" else (0, 1)
+    depth = 1 if args.view == "side" else 2  # far particles are drawn first
+    fig, ax = plt.subplots(figsize=(8, 5))
+    grid = read(particles_file)
+    centres = vtk_to_numpy(grid.GetPoints().GetData()) if grid.GetNumberOfPoints() else np.zeros((0, 3))
+    speed = np.linalg.norm(vtk_to_numpy(grid.GetPointData().GetArray("velocity")), axis=1) if len(centres) else np.zeros(0)
+    vmax = max(float(speed.max()) if len(speed) else 0.0, 1e-12)
+    cmap = plt.get_cmap("viridis")
+    shapes_pvd = vtk_dir / "shapes.pvd"
+    shape_index = vtk_to_numpy(grid.GetPointData().GetArray("shape")) if len(centres) else np.zeros(0)
+    if shapes_pvd.exists():
+        mesh = read(frame(shapes_pvd, t)[1])
+        points = vtk_to_numpy(mesh.GetPoints().GetData())
+        cell_speed = np.linalg.norm(vtk_to_numpy(mesh.GetCellData().GetArray("velocity")), axis=1)
+        polygons, colours, order = [], [], []
+        for c in range(mesh.GetNumberOfCells()):
+            ids = [mesh.GetCell(c).GetPointId(k) for k in range(mesh.GetCell(c).GetNumberOfPoints())]
+            polygons.append(points[ids][:, axes])
+            colours.append(cmap(cell_speed[c] / vmax))
+            order.append(points[ids][:, depth].mean() * (-1 if args.view == "side" else 1))
+        sequence = np.argsort(order)[::-1] if args.view == "side" else np.argsort(order)
+        ax.add_collection(PolyCollection([polygons[k] for k in sequence], facecolors=[colours[k] for k in sequence],
+                                         edgecolors="k", linewidths=0.1))
+    spheres = [k for k in range(len(centres)) if shape_index[k] == 0]
+    radius = vtk_to_numpy(grid.GetPointData().GetArray("radius")) if len(centres) else np.zeros(0)
+    discs = [Circle((centres[k, axes[0]], centres[k, axes[1]]), radius[k]) for k in spheres]
+    ax.add_collection(PatchCollection(discs, facecolors=[cmap(speed[k] / vmax) for k in spheres], edgecolors="k", linewidths=0.2))
+    walls = vtk_dir / "walls.pvd"
+    if walls.exists():
+        wall_grid = read(frame(walls, t)[1])
+        wall_points = vtk_to_numpy(wall_grid.GetPoints().GetData()) if wall_grid.GetNumberOfPoints() else np.zeros((0, 3))
+        if len(wall_points):
+            lo, hi = wall_points.min(axis=0), wall_points.max(axis=0)
+            ax.set_xlim(lo[axes[0]], hi[axes[0]])
+            ax.set_ylim(lo[axes[1]], hi[axes[1]])
+    else:
+        ax.autoscale_view()
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("z (m)" if args.view == "side" else "y (m)")
+    ax.set_title(f"t = {t:.4g} s, coloured by speed (max {vmax:.3g} m/s)")
+    out = Path(args.out) if args.out else Path(args.results) / f"render_{args.view}_{t:.4g}.png"
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    print(out)
+
+
+if __name__ == "__main__":
+    main()
