@@ -113,35 +113,7 @@ ChuteCase make_case(const std::string& name, double length, double width, double
   return c;
 }
 
-std::unique_ptr<World> make_empty_chute_world(const ChuteSetup& s) {
-  // As build_chute (src/talus/scenario/chute.cpp), without the particles.
-  const double theta = s.angle_deg * std::numbers::pi / 180;
-  WorldSettings ws;
-  ws.domain.lo = {0, 0, -2 * std::max(s.base_diameter, s.diameter)};
-  ws.domain.hi = {s.length, s.width, 10 * s.fill_height + 10};
-  ws.domain.periodic[0] = ws.domain.periodic[1] = true;
-  ws.gravity = {std::sin(theta), 0, -std::cos(theta)};
-  ws.tangential_model = s.model;
-  const double mass = s.density * std::numbers::pi / 6 * s.diameter * s.diameter * s.diameter;
-  const double m_ij = 0.5 * mass;
-  ws.time_step = s.time_step > 0 ? s.time_step
-                                 : params::collision_time(s.flow.normal_stiffness, s.flow.normal_damping.at(m_ij), m_ij) / 50;
-  auto world = std::make_unique<World>(ws);
-  world->contacts().resize(2, 1);  // species 0: flowing, 1: base; wall material 0: flat base
-  world->contacts().set_pair(0, 0, s.flow);
-  world->contacts().set_pair(0, 1, s.base);
-  world->contacts().set_pair(1, 1, s.base);
-  world->contacts().set_wall(0, 0, s.base);
-  world->contacts().set_wall(1, 0, s.base);
-  if (s.base_diameter <= 0) {
-    Wall floor;
-    floor.name = "base";
-    floor.origin = {0, 0, 0};
-    floor.normal = {0, 0, 1};
-    world->add_wall(floor);
-  }
-  return world;
-}
+std::unique_ptr<World> make_empty_chute_world(const ChuteSetup& s) { return make_chute_world(s); }
 
 std::filesystem::path cache_path(const std::filesystem::path& dir, const ChuteCase& c) {
   const ChuteSetup& s = c.setup;

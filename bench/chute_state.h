@@ -23,7 +23,7 @@ struct ChuteCase {
 ChuteCase make_case(const std::string& name, double length, double width, double fill_height, double flow_time);
 
 // An empty World with the settings and contact table that build_chute(s) gives its world.
-// Duplicates the first lines of build_chute (src/talus/scenario/chute.cpp); keep in step.
+// The same as make_chute_world (src/talus/scenario/chute.h).
 std::unique_ptr<World> make_empty_chute_world(const ChuteSetup& s);
 
 // Cache file of a case, keyed by every set-up parameter (a hash covers the contact law).

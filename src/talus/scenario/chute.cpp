@@ -81,7 +81,7 @@ std::size_t chute_particle_count(const ChuteSetup& s) {
   return static_cast<std::size_t>(std::llround(200 * s.fill_height * s.length * s.width / 200.0));
 }
 
-std::unique_ptr<World> build_chute(const ChuteSetup& s) {
+std::unique_ptr<World> make_chute_world(const ChuteSetup& s) {
   const double theta = s.angle_deg * std::numbers::pi / 180;
   WorldSettings ws;
   ws.domain.lo = {0, 0, -2 * std::max(s.base_diameter, s.diameter)};
@@ -100,21 +100,27 @@ std::unique_ptr<World> build_chute(const ChuteSetup& s) {
   world->contacts().set_pair(1, 1, s.base);
   world->contacts().set_wall(0, 0, s.base);
   world->contacts().set_wall(1, 0, s.base);
+  if (s.base_diameter <= 0) {
+    Wall floor;
+    floor.name = "base";
+    floor.origin = {0, 0, 0};
+    floor.normal = {0, 0, 1};
+    world->add_wall(floor);
+  }
+  return world;
+}
 
+std::unique_ptr<World> build_chute(const ChuteSetup& s) {
+  auto world = make_chute_world(s);
+  const Domain& domain = world->settings().domain;
   std::mt19937_64 rng(s.seed);
-  SphereOverlapIndex index({0, 0, ws.domain.lo.z}, {s.length, s.width, 4 * s.fill_height + 10}, ws.domain.periodic,
+  SphereOverlapIndex index({0, 0, domain.lo.z}, {s.length, s.width, 4 * s.fill_height + 10}, domain.periodic,
                            std::max(s.diameter, s.base_diameter));
   if (s.base_diameter > 0) {
     for (const Vec3& x : make_rough_base(s.length, s.width, s.base_diameter, s.seed + 1)) {
       index.insert({x, 0.5 * s.base_diameter});
       world->add_sphere(x, 0.5 * s.base_diameter, s.density, 1, true);
     }
-  } else {
-    Wall floor;
-    floor.name = "base";
-    floor.origin = {0, 0, 0};
-    floor.normal = {0, 0, 1};
-    world->add_wall(floor);
   }
   const std::size_t n = chute_particle_count(s);
   const std::size_t first = index.spheres().size();

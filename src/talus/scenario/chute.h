@@ -36,6 +36,10 @@ std::vector<Vec3> make_rough_base(double length, double width, double lambda, st
 // Number of flowing particles for filling height H: 200 H per 20 x 10 of area, rounded.
 std::size_t chute_particle_count(const ChuteSetup& s);
 
+// The chute's World without particles: periodic box, tilted gravity, time step, contact table
+// (species 0 flowing, 1 base), and a flat floor when lambda = 0.
+std::unique_ptr<World> make_chute_world(const ChuteSetup& s);
+
 // Builds the chute, fills it by growing-region insertion and tilts gravity.
 std::unique_ptr<World> build_chute(const ChuteSetup& s);
 
