@@ -56,7 +56,7 @@ inline Vec3 rotate_between(const Vec3& a, const Vec3& b, const Vec3& v) {
 }
 
 template <TangentialModel Model>
-inline ContactResult contact_force(const ContactGeometry& g, const ContactMotion& m,
+[[gnu::always_inline]] inline ContactResult contact_force(const ContactGeometry& g, const ContactMotion& m,
                                    const ContactParams& p, double reduced_mass,
                                    double reduced_radius, double dt, ContactHistoryRef h) {
   ContactResult out;

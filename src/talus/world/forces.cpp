@@ -37,25 +37,41 @@ void World::pair_forces(double memory_dt) {
   const bool has_spring = !mem.spring.empty();
   const bool has_normal = !mem.normal_prev.empty();
   const bool has_rolling = !mem.rolling.empty();
+  const bool has_shapes = has_composites();
   const long slabs = static_cast<long>(list.slabs());
+  // Raw pointers: the force writes cannot alias the arrays read, and the compiler may keep
+  // the bases in registers.
+  const Vec3* __restrict position = p.position.data();
+  const Vec3* __restrict velocity = p.velocity.data();
+  const Vec3* __restrict spin = p.angular_velocity.data();
+  const double* __restrict radius = p.radius.data();
+  const double* __restrict inv_mass = p.inv_mass.data();
+  const std::int32_t* __restrict species = p.species.data();
+  const std::int32_t* __restrict shape = p.shape.data();
+  Vec3* __restrict force = p.force.data();
+  Vec3* __restrict torque = p.torque.data();
+  Vec3* __restrict spring = has_spring ? mem.spring.data() : nullptr;
+  Vec3* __restrict normal_prev = has_normal ? mem.normal_prev.data() : nullptr;
+  Vec3* __restrict rolling = has_rolling ? mem.rolling.data() : nullptr;
 
   // Slab s writes to slabs s and s + 1 only: even slabs run together, then odd ones.
   for (int colour = 0; colour < 2; ++colour) {
 #pragma omp parallel for schedule(dynamic, 1) if (worth_parallel(p.owned))
     for (long s = colour; s < slabs; s += 2) {
       for (std::uint32_t i = list.slab_begin(s); i < list.slab_end(s); ++i) {
-        const Vec3 xi = p.position[i];
-        const double ri = p.radius[i];
-        const double inv_mi = p.inv_mass[i];
-        const int species_i = p.species[i];
+        const Vec3 xi = position[i];
+        const double ri = radius[i];
+        const double inv_mi = inv_mass[i];
+        const int species_i = species[i];
         Vec3 fi, ti;
-        for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
+        const std::uint32_t row_end = list.row_end(i);
+        for (std::uint32_t e = list.row_begin(i); e < row_end; ++e) {
           const std::uint32_t j = list.neighbor(e);
-          const Vec3 d = xi - p.position[j];
-          const double rj = p.radius[j];
+          const Vec3 d = xi - position[j];
+          const double rj = radius[j];
           const double reach = ri + rj;
           const double dist2 = norm2(d);
-          if (p.shape[i] != 0 || p.shape[j] != 0) {  // rigid shapes: contacts between convex parts
+          if (has_shapes && (shape[i] != 0 || shape[j] != 0)) {  // rigid shapes: contacts between convex parts
             if (dist2 >= reach * reach) {
               pair_sub_[e].clear();
               continue;
@@ -63,13 +79,16 @@ void World::pair_forces(double memory_dt) {
             const ContactResult r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt);
             fi += r.force_on_i;
             ti += r.torque_i;
-            p.force[j] -= r.force_on_i;
-            p.torque[j] += r.torque_j;
+            force[j] -= r.force_on_i;
+            torque[j] += r.torque_j;
             continue;
           }
-          if (dist2 >= reach * reach) {
-            if (has_spring && norm2(mem.spring[e]) > 0) mem.spring[e] = {};
-            if (has_normal && norm2(mem.normal_prev[e]) > 0) mem.clear(e);
+          if (dist2 >= reach * reach) {  // apart: a later contact starts afresh
+            if (has_spring && norm2(spring[e]) > 0) spring[e] = {};
+            if (has_normal && norm2(normal_prev[e]) > 0) {
+              normal_prev[e] = {};
+              if (has_rolling) rolling[e] = {};
+            }
             continue;
           }
           const double dist = std::sqrt(dist2);
@@ -80,20 +99,20 @@ void World::pair_forces(double memory_dt) {
           g.arm_i = g.normal * -(ri - 0.5 * g.overlap);  // Weinhart et al. 2012, branch vector b_ij after Eq. (8)
           g.arm_j = g.normal * (rj - 0.5 * g.overlap);
           g.inv_distance = inv_dist;
-          const ContactMotion m{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
-          const ContactHistoryRef h{has_spring ? &mem.spring[e] : nullptr, has_normal ? &mem.normal_prev[e] : nullptr,
-                                    has_rolling ? &mem.rolling[e] : nullptr};
-          const double reduced_mass = 1.0 / (inv_mi + p.inv_mass[j]);
-          const double reduced_radius = ri * rj / reach;
-          const ContactResult r = contact_force<Model>(g, m, table_.pair(species_i, p.species[j]), reduced_mass,
-                                                       reduced_radius, memory_dt, h);
+          const ContactMotion m{velocity[i], spin[i], velocity[j], spin[j]};
+          const ContactHistoryRef h{has_spring ? spring + e : nullptr, has_normal ? normal_prev + e : nullptr,
+                                    has_rolling ? rolling + e : nullptr};
+          const ContactParams& params = table_.pair(species_i, species[j]);
+          const double reduced_mass = 1.0 / (inv_mi + inv_mass[j]);
+          const double reduced_radius = params.rolling.enabled ? ri * rj / reach : 0.0;
+          const ContactResult r = contact_force<Model>(g, m, params, reduced_mass, reduced_radius, memory_dt, h);
           fi += r.force_on_i;
           ti += r.torque_i;
-          p.force[j] -= r.force_on_i;
-          p.torque[j] += r.torque_j;
+          force[j] -= r.force_on_i;
+          torque[j] += r.torque_j;
         }
-        p.force[i] += fi;
-        p.torque[i] += ti;
+        force[i] += fi;
+        torque[i] += ti;
       }
     }
   }
