@@ -387,7 +387,7 @@ Scenario load_scenario(ScenarioFile& f) {
   double r_max = 0;
   for (std::size_t i = 0; i < world->particles().owned; ++i) r_max = std::max(r_max, world->particles().radius[i]);
   for (int a = 0; a < 3; ++a)
-    if (domain.periodic[a] && domain.length(a) < 2 * (2.2 * r_max))
+    if (domain.periodic[a] && domain.length(a) < 2 * (2.3 * r_max))
       f.fail(chute ? "chute" : "domain.hi", "periodic box narrower than two particle diameters plus skin");
 
   f.check_no_unknown_keys();

@@ -85,7 +85,7 @@ void World::prepare() {
     if (particles_.species[i] < 0 || particles_.species[i] >= table_.species())
       throw std::logic_error("particle species without contact parameters");
   }
-  skin_ = settings_.skin > 0 ? settings_.skin : 0.2 * r_max;
+  skin_ = settings_.skin > 0 ? settings_.skin : 0.3 * r_max;
   wall_force_.assign(walls_.size(), Vec3{});
   rebuild();
   compute_forces(0.0);  // forces at t0; memories do not advance
