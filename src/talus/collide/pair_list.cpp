@@ -95,14 +95,19 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
   memory.resize(neighbor_.size(), layout);
 }
 
+std::vector<std::int32_t> rows_by_global_id(std::size_t rows, const std::vector<std::uint32_t>& gid,
+                                            std::size_t gid_limit) {
+  std::vector<std::int32_t> row_of(gid_limit, -1);
+  for (std::size_t i = 0; i < rows; ++i) row_of[gid[i]] = static_cast<std::int32_t>(i);
+  return row_of;
+}
+
 void PairList::transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
                                const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
                                std::vector<std::int64_t>* origin) {
   if (origin) origin->assign(entries(), 0);
   if (old.entries() == 0) return;
-  // Old row of each global id (owned particles only).
-  std::vector<std::int32_t> old_row_of(gid_limit, -1);
-  for (std::size_t i = 0; i < old.rows(); ++i) old_row_of[old_gid[i]] = static_cast<std::int32_t>(i);
+  const std::vector<std::int32_t> old_row_of = rows_by_global_id(old.rows(), old_gid, gid_limit);
   auto find = [&](std::uint32_t a, std::uint32_t b) -> std::int64_t {
     const std::int32_t r = old_row_of[a];
     if (r < 0) return -1;

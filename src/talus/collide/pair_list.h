@@ -33,6 +33,11 @@ struct ContactMemory {
   void copy_from(const ContactMemory& source, std::size_t from, std::size_t to, bool reversed);
 };
 
+// Row (owned index) of each global id in a list built earlier, -1 where absent: how contact
+// memories find their previous entries after particles were sorted again.
+std::vector<std::int32_t> rows_by_global_id(std::size_t rows, const std::vector<std::uint32_t>& gid,
+                                            std::size_t gid_limit);
+
 class PairList {
  public:
   // Builds the list over owned particles (sorted by slab) and ghosts; pairs whose bounding

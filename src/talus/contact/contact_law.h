@@ -4,6 +4,7 @@
 // pairs, particle-wall contacts and (later) every contact point between convex parts.
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "talus/contact/contact_params.h"
 #include "talus/math/vec3.h"
@@ -43,6 +44,19 @@ struct ContactResult {
   Vec3 torque_j;           ///< N m, about the centre of j
   double normal_force = 0; ///< N, |F_n|
 };
+
+// Calls f(std::integral_constant<TangentialModel, M>) for the runtime model: the hot loops are
+// compiled once per model and the choice is made once per call, not per contact.
+template <class F>
+decltype(auto) with_tangential_model(TangentialModel model, F&& f) {
+  switch (model) {
+    case TangentialModel::memoryless: return f(std::integral_constant<TangentialModel, TangentialModel::memoryless>{});
+    case TangentialModel::elastic_spring:
+      return f(std::integral_constant<TangentialModel, TangentialModel::elastic_spring>{});
+    case TangentialModel::memory: break;
+  }
+  return f(std::integral_constant<TangentialModel, TangentialModel::memory>{});
+}
 
 // Rotates v by the smallest rotation taking unit vector a onto unit vector b. This is the
 // q_rot of Huet et al. 2021, Eq. (8), written in closed form (Rodrigues):

@@ -158,12 +158,8 @@ Snapshot World::snapshot() const {
       const ContactParams& c = table_.pair(p.species[i], p.species[j]);
       const double mij = 1 / (p.inv_mass[i] + p.inv_mass[j]);
       const double rij = p.radius[i] * p.radius[j] / reach;
-      ContactResult res;
-      switch (settings_.tangential_model) {
-        case TangentialModel::memory: res = contact_force<TangentialModel::memory>(g, m, c, mij, rij, 0, h); break;
-        case TangentialModel::memoryless: res = contact_force<TangentialModel::memoryless>(g, m, c, mij, rij, 0, h); break;
-        case TangentialModel::elastic_spring: res = contact_force<TangentialModel::elastic_spring>(g, m, c, mij, rij, 0, h); break;
-      }
+      const ContactResult res = with_tangential_model(
+          settings_.tangential_model, [&](auto model) { return contact_force<model.value>(g, m, c, mij, rij, 0, h); });
       ContactRecord rec;
       rec.i = record_of[i];
       rec.j = record_of[owner(j)];

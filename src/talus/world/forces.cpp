@@ -14,18 +14,10 @@ void World::compute_forces(double memory_dt) {
     p.force[i] = {};
     p.torque[i] = {};
   }
-  switch (settings_.tangential_model) {
-    case TangentialModel::memory: pair_forces<TangentialModel::memory>(memory_dt); break;
-    case TangentialModel::memoryless: pair_forces<TangentialModel::memoryless>(memory_dt); break;
-    case TangentialModel::elastic_spring: pair_forces<TangentialModel::elastic_spring>(memory_dt); break;
-  }
+  with_tangential_model(settings_.tangential_model, [&](auto model) { pair_forces<model.value>(memory_dt); });
   ghosts_.fold_forces(p);
   if (walls_.empty()) return;
-  switch (settings_.tangential_model) {
-    case TangentialModel::memory: wall_forces<TangentialModel::memory>(memory_dt); break;
-    case TangentialModel::memoryless: wall_forces<TangentialModel::memoryless>(memory_dt); break;
-    case TangentialModel::elastic_spring: wall_forces<TangentialModel::elastic_spring>(memory_dt); break;
-  }
+  with_tangential_model(settings_.tangential_model, [&](auto model) { wall_forces<model.value>(memory_dt); });
 }
 
 template <TangentialModel Model>

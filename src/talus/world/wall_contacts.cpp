@@ -35,8 +35,7 @@ void WallContactList::transfer_memory(const WallContactList& old, const std::vec
                                       std::vector<std::int64_t>* origin) {
   if (origin) origin->assign(entries(), 0);
   if (old.entries() == 0) return;
-  std::vector<std::int32_t> old_row_of(gid_limit, -1);
-  for (std::size_t i = 0; i < old.rows(); ++i) old_row_of[old_gid[i]] = static_cast<std::int32_t>(i);
+  const std::vector<std::int32_t> old_row_of = rows_by_global_id(old.rows(), old_gid, gid_limit);
   for (std::size_t i = 0; i < rows(); ++i) {
     const std::int32_t r = old_row_of[gid[i]];
     if (r < 0) continue;
