@@ -45,6 +45,7 @@
 
 #include "chute_state.h"
 #include "chute_timing.h"
+#include "cross_pile.h"
 #include "proc_memory.h"
 
 namespace fs = std::filesystem;
@@ -62,11 +63,13 @@ struct Options {
   double flow_time = 0;            ///< sqrt(d/g), age of the cached flowing state; 0: 10 (1 with --quick)
   int gen_threads = 0;             ///< threads for cache generation; 0: omp_get_max_threads()
   std::string probe;               ///< internal: run the memory probe of this case and exit
+  std::size_t crosses = 2000;      ///< crosses in the cross pile (--only crosspile)
 };
 
 void usage() {
   std::fprintf(stderr,
-               "usage: talus-bench [--quick] [--cache DIR] [--only chute4k|chute32k] [--steps4k N] [--steps32k N]\n"
+               "usage: talus-bench [--quick] [--cache DIR] [--only chute4k|chute32k|crosspile] [--steps4k N] [--steps32k N]\n"
+               "                   [--crosses N] (the cross pile runs only with --only crosspile: it settles for minutes)\n"
                "                   [--warmup N] [--reps N] [--flow-time T] [--gen-threads N]\n"
                "       talus-bench --micro [Google Benchmark flags]\n");
 }
@@ -89,12 +92,13 @@ Options parse(int argc, char** argv) {
     else if (a == "--reps") { o.reps = std::stoi(value()); reps_set = true; }
     else if (a == "--flow-time") o.flow_time = std::stod(value());
     else if (a == "--gen-threads") o.gen_threads = std::stoi(value());
+    else if (a == "--crosses") o.crosses = static_cast<std::size_t>(std::stoul(value()));
     else if (a == "--memory-probe") o.probe = value();
     else if (a == "--help" || a == "-h") { usage(); std::exit(0); }
     else throw std::invalid_argument("unknown argument " + a);
   }
-  if (!o.only.empty() && o.only != "chute4k" && o.only != "chute32k")
-    throw std::invalid_argument("--only takes chute4k or chute32k");
+  if (!o.only.empty() && o.only != "chute4k" && o.only != "chute32k" && o.only != "crosspile")
+    throw std::invalid_argument("--only takes chute4k, chute32k or crosspile");
   if (o.reps < 1) throw std::invalid_argument("--reps must be at least 1");
   if (o.flow_time <= 0) o.flow_time = o.quick ? 1 : 10;
   if (o.gen_threads <= 0) o.gen_threads = omp_get_max_threads();
@@ -262,6 +266,12 @@ int main(int argc, char** argv) {
     const Options o = parse(argc, argv);
     if (!o.probe.empty()) return memory_probe(o);
 
+    if (o.only == "crosspile") {
+      CrossPileOptions c;
+      c.crosses = o.crosses;
+      run_cross_pile(c, [](const char* name, double value, const char* unit) { metric(name, value, unit); });
+      return 0;
+    }
     const std::vector<ChuteCase> chosen = cases(o);
     if (o.quick) metric("quick", 1, "bool");
     for (const ChuteCase& c : chosen) {  // generate missing caches first, outside every measurement

@@ -30,6 +30,8 @@ void World::pair_forces(double memory_dt) {
   const bool has_normal = !mem.normal_prev.empty();
   const bool has_rolling = !mem.rolling.empty();
   const bool has_shapes = has_composites();
+  // Rigid shapes cost a narrow phase per part pair: a team pays off with far fewer bodies.
+  const bool parallel = worth_parallel(has_shapes ? 16 * p.owned : p.owned);
   const long slabs = static_cast<long>(list.slabs());
   // Raw pointers: the force writes cannot alias the arrays read, and the compiler may keep
   // the bases in registers.
@@ -48,7 +50,7 @@ void World::pair_forces(double memory_dt) {
 
   // Slab s writes to slabs s and s + 1 only: even slabs run together, then odd ones.
   for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(dynamic, 1) if (worth_parallel(p.owned))
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
     for (long s = colour; s < slabs; s += 2) {
       for (std::uint32_t i = list.slab_begin(s); i < list.slab_end(s); ++i) {
         const Vec3 xi = position[i];
@@ -128,7 +130,7 @@ void World::wall_forces(double memory_dt) {
     active[w] = walls_[w].active(t);
   }
   const long n = static_cast<long>(list.rows());
-#pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
+#pragma omp parallel for schedule(static) if (worth_parallel(has_composites() ? 16 * p.owned : p.owned))
   for (long i = 0; i < n; ++i) {
     if (p.inv_mass[i] == 0.0) continue;  // fixed particles do not feel walls
     for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {

@@ -103,6 +103,7 @@ class World {
   std::uint64_t rebuilds() const { return rebuilds_; }
   std::size_t memory_bytes() const;
   const PhaseTimer& timer() const { return timer_; }
+  PhaseTimer& timer_mutable() { return timer_; }
 
   Diagnostics diagnostics() const;
   Snapshot snapshot() const;  ///< particles in global id order, contacts with their forces
