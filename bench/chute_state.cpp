@@ -174,6 +174,7 @@ std::unique_ptr<World> load_state(const ChuteCase& c, const std::filesystem::pat
   r.get(n);
 
   auto world = make_empty_chute_world(c.setup);
+  world->reserve_particles(n);
   for (std::uint64_t k = 0; k < n; ++k) {
     ParticleInit init;
     Vec3 inv_inertia;

@@ -72,6 +72,8 @@ class World {
   std::uint32_t add_particle(const ParticleInit& init);
   std::uint32_t add_sphere(const Vec3& position, double radius, double density, int species, bool fixed = false);
   int add_wall(const Wall& wall);
+  // Room for n particles, so that adding them one by one does not double every array.
+  void reserve_particles(std::size_t n) { particles_.reserve(n); }
   // Registers a rigid shape (parts in the body's principal frame); particles refer to it by index.
   // Index 0 is the sphere, whose radius each particle carries.
   int add_shape(const CompositeShape& shape);
