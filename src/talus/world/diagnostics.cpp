@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "talus/world/memory_ref.h"
 #include "talus/world/world.h"
 
 namespace talus {
@@ -152,9 +153,7 @@ Snapshot World::snapshot() const {
       g.arm_j = g.normal * (p.radius[j] - 0.5 * g.overlap);
       g.inv_distance = 1 / dist;
       const ContactMotion m{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
-      const ContactHistoryRef h{scratch.spring.empty() ? nullptr : &scratch.spring[e],
-                                scratch.normal_prev.empty() ? nullptr : &scratch.normal_prev[e],
-                                scratch.rolling.empty() ? nullptr : &scratch.rolling[e]};
+      const ContactHistoryRef h = memory_ref(scratch, e);
       const ContactParams& c = table_.pair(p.species[i], p.species[j]);
       const double mij = 1 / (p.inv_mass[i] + p.inv_mass[j]);
       const double rij = p.radius[i] * p.radius[j] / reach;

@@ -1,6 +1,7 @@
 // The contact-force phase of World::step(): particle pairs by slab colouring, then walls.
 #include <omp.h>
 
+#include "talus/world/memory_ref.h"
 #include "talus/world/parallel.h"
 #include "talus/world/world.h"
 
@@ -118,9 +119,6 @@ void World::wall_forces(double memory_dt) {
   ParticleStore& p = particles_;
   WallContactList& list = wall_pairs_;
   ContactMemory& mem = list.memory;
-  const bool has_spring = !mem.spring.empty();
-  const bool has_normal = !mem.normal_prev.empty();
-  const bool has_rolling = !mem.rolling.empty();
   const double t = time_;
   std::vector<Vec3> origin(walls_.size()), wall_velocity(walls_.size());
   std::vector<char> active(walls_.size());
@@ -160,8 +158,7 @@ void World::wall_forces(double memory_dt) {
       g.arm_i = wall.normal * -(r - 0.5 * g.overlap);  // midpoint of the two deepest points (Huet et al. 2021, Fig. 2)
       g.inv_distance = 0;                               // a plane's normal does not turn
       const ContactMotion m{p.velocity[i], p.angular_velocity[i], wall_velocity[w], Vec3{}};
-      const ContactHistoryRef h{has_spring ? &mem.spring[e] : nullptr, has_normal ? &mem.normal_prev[e] : nullptr,
-                                has_rolling ? &mem.rolling[e] : nullptr};
+      const ContactHistoryRef h = memory_ref(mem, e);
       const ContactResult res = contact_force<Model>(g, m, table_.wall(p.species[i], wall.material),
                                                      1.0 / p.inv_mass[i], r, memory_dt, h);
       p.force[i] += res.force_on_i;
