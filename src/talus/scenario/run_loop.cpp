@@ -110,12 +110,14 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
     next_frame += run.vtk_interval;
   };
   if (run.vtk_interval > 0) vtk.emplace(opt.out / "vtk", world.shapes());
+  for (auto& o : sc.observers) o->start(world, opt.out);
   frame_due();
   double next_output = world.time() + run.output_interval;
   const double dt = world.settings().time_step;
   while (world.time() < run.end_time - 0.5 * dt) {
     for (Pouring& pour : sc.pours) pour.pour_due(world);
     world.step();
+    for (auto& o : sc.observers) o->after_step(world);
     if (world.time() >= next_output - 0.5 * dt) {
       next_output += run.output_interval;
       const Diagnostics d = world.diagnostics();
@@ -124,6 +126,13 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
         outcome.stop_reason = "kinetic_energy";
         break;
       }
+      bool stop = false;
+      for (auto& o : sc.observers)
+        if (!stop && o->output(world, d)) {
+          outcome.stop_reason = o->stop_reason();
+          stop = true;
+        }
+      if (stop) break;
     }
     frame_due();
     if (g_stop_requested) {
@@ -160,6 +169,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
     walls[world.walls()[w].name] = {f.x, f.y, f.z};
   }
   summary["wall_forces"] = walls;
+  for (auto& o : sc.observers) o->finish(world, opt.out, summary);
   io::write_json(opt.out / "summary.json", summary);
   return outcome;
 }

@@ -10,6 +10,7 @@
 
 #include "talus/io/scenario_file.h"
 #include "talus/scenario/pouring.h"
+#include "talus/scenario/run_observer.h"
 #include "talus/world/world.h"
 
 namespace talus {
@@ -29,6 +30,7 @@ struct Scenario {
   std::vector<std::string> species;          ///< names, by species index
   std::vector<std::string> wall_materials;   ///< names, by material index
   std::vector<Pouring> pours;                ///< particles poured while the run goes on
+  std::vector<std::unique_ptr<RunObserver>> observers;  ///< study-specific phases and analyses
   nlohmann::json derived;                    ///< contact times, time step, counts: printed by `talus check`
 };
 

@@ -1,0 +1,32 @@
+#pragma once
+// A part of a scenario that watches, and may steer, a run: the dam break's phases (pour, settle,
+// open the gate, collapse), the chute's coarse graining. The run loop calls every observer at
+// fixed points of the run; observers write their own files into the results folder, atomically.
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "talus/world/world.h"
+
+namespace talus {
+
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  virtual std::string name() const = 0;
+  // Before the first step; `out` is the results folder.
+  virtual void start(World& /*world*/, const std::filesystem::path& /*out*/) {}
+  // After every step: keep it cheap. May move walls or remove particles.
+  virtual void after_step(World& /*world*/) {}
+  // At every output step with its diagnostics; returning true ends the run with stop_reason().
+  virtual bool output(World& /*world*/, const Diagnostics& /*d*/) { return false; }
+  virtual std::string stop_reason() const { return name(); }
+  // After the last step: adds its figures to summary.json and writes its own files into `out`.
+  virtual void finish(World& /*world*/, const std::filesystem::path& /*out*/, nlohmann::json& /*summary*/) {}
+  // What a checkpoint must carry to resume the observer exactly where it was.
+  virtual nlohmann::json state() const { return nlohmann::json::object(); }
+  virtual void restore(const nlohmann::json& /*state*/) {}
+};
+
+}  // namespace talus
