@@ -41,9 +41,8 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
   // Room for about as many entries per row as the last build had, so that blocks seldom grow
   // by doubling (a transient the peak memory would see). The old entries go first: whatever
   // must survive has been carried out of the list.
-  const double per_row = rows() ? static_cast<double>(neighbor_.size()) / static_cast<double>(rows()) : 0.0;
-  std::vector<std::uint32_t>().swap(neighbor_);
-  memory = ContactMemory{};
+  const double per_row = entries_per_row_;
+  release();
   row_.assign(owned + 1, 0);
 
   // Slab ranges: owned particles arrive sorted by slab.
@@ -102,7 +101,13 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
     std::vector<std::uint32_t>().swap(block_neighbors[t]);
   }
   memory.resize(neighbor_.size(), layout);
+  entries_per_row_ = owned ? static_cast<double>(neighbor_.size()) / static_cast<double>(owned) : 0.0;
   split_slabs();
+}
+
+void PairList::release() {
+  std::vector<std::uint32_t>().swap(neighbor_);
+  memory = ContactMemory{};
 }
 
 void PairList::split_slabs() {

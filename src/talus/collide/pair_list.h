@@ -65,6 +65,9 @@ class PairList {
   // the global ids `gid` of this list's particles; `restore_memory` hands them to this list
   // built anew (`origin` as for transfer_memory).
   CarriedContacts carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit, bool every_entry) const;
+  // Frees the entries and their memory until the next build (which still sizes its buffers
+  // from their number).
+  void release();
   void restore_memory(const CarriedContacts& carried, const std::vector<std::uint32_t>& gid,
                       std::vector<std::int64_t>* origin = nullptr);
 
@@ -92,6 +95,7 @@ class PairList {
   std::vector<std::uint32_t> neighbor_;
   std::vector<std::uint32_t> slab_start_;  ///< first owned particle of each slab
   std::vector<std::uint32_t> chunk_;       ///< first slab of each chunk, then the slab count
+  double entries_per_row_ = 0;             ///< of the last build
 };
 
 }  // namespace talus

@@ -135,6 +135,7 @@ void World::rebuild() {
   // The memories the new list must find, compact (the entries in contact only), so that the
   // old list is freed before the new one is built: the two never coexist at the peak.
   CarriedContacts carried = pairs_.carry(gid_at_build_, next_gid_, has_composites());
+  pairs_.release();
 
   // Sort owned particles by cell, slab axis slowest: slabs become contiguous and neighbours
   // close in memory. A stable counting sort; the cells are recomputed after the sort rather
