@@ -98,6 +98,8 @@ def force_pdf_axes(axes, tables, label_prefix=""):
             for r in rows:
                 ax.plot(r["force_ratio"], r["density"], ".", color="tab:blue", ms=2, alpha=0.4)
         mean = np.mean([r["density"] for r in rows], axis=0)
+        if scale == 1:  # empty bins have no logarithm
+            mean = np.where(mean > 0, mean, np.nan)
         ax.plot(rows[0]["force_ratio"], mean, "k-", label=f"{label_prefix}mean of {len(tables)} run(s)")
         ax.set_xlabel(r"$F_c / \langle F_c \rangle$")
         ax.set_ylabel("PDF")
