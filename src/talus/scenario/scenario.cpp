@@ -10,6 +10,7 @@
 #include "talus/scenario/contact_reader.h"
 #include "talus/scenario/dam_break.h"
 #include "talus/scenario/dam_break_observer.h"
+#include "talus/scenario/hopper_observer.h"
 #include "talus/scenario/insertion.h"
 #include "talus/scenario/rigid_body_type.h"
 #include "talus/shape/convex_shape.h"
@@ -374,6 +375,7 @@ Scenario load_scenario(ScenarioFile& f) {
     }
     sc.observers.push_back(std::make_unique<DamBreakObserver>(dam, dam_walls));
   }
+  if (f.has("hopper")) sc.observers.push_back(std::make_unique<HopperObserver>(read_hopper(f, domain.lo, domain.hi)));
   const std::size_t pour_count = f.array_size("pour");
   for (std::size_t k = 0; k < pour_count; ++k) {
     const std::string key = indexed("pour", k);
