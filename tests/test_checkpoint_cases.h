@@ -72,19 +72,21 @@ tangential_damping_rate = 50
 friction = 0.5
 )";
 
-// Crosses (Huet et al. 2021) poured in batches onto a floor, with contact manifolds: each
-// contact point has its own memory, and the pour's random generator is in mid-stream.
+// Crosses (Huet et al. 2021) with contact manifolds, dropped under strong gravity (to pile up
+// within a few thousand steps) while a pour goes on above them: each contact point has its own
+// memory, and the pour's random generator is in mid-stream.
 inline const char* kCrossPour = R"([run]
-end_time = 0.06
+end_time = 0.12
 output_interval = 0.005
-time_step = 5e-6
+time_step = 1e-5
 seed = 4
 [domain]
 lo = [0.0, 0.0, 0.0]
-hi = [0.06, 0.06, 0.08]
+hi = [0.05, 0.05, 0.2]
+gravity = [0.0, 0.0, -50.0]
 [box]
 lo = [0.0, 0.0, 0.0]
-hi = [0.06, 0.06, 0.08]
+hi = [0.05, 0.05, 0.2]
 open_top = true
 [species.cross]
 shape = "cross"
@@ -95,21 +97,25 @@ thickness = 0.003
 [contact]
 model = "memory"
 manifold = true
-normal_stiffness = 4.5e5
-normal_restitution = 0.85
+normal_stiffness = 5e4
+normal_restitution = 0.3
 tangential_stiffness = 300.0
 tangential_damping_factor = 1000.0
 friction = 0.46
 [contact.wall]
 friction = 0.62
+[[insert]]
+species = "cross"
+count = 6
+region_lo = [0.012, 0.012, 0.012]
+region_hi = [0.038, 0.038, 0.12]
 [[pour]]
 species = "cross"
-count = 16
-batch = 4
-interval = 0.012
-region_lo = [0.014, 0.014, 0.014]
-region_hi = [0.046, 0.046, 0.06]
-velocity = [0.0, 0.0, -1.5]
+count = 8
+batch = 2
+interval = 0.03
+region_lo = [0.012, 0.012, 0.14]
+region_hi = [0.038, 0.038, 0.19]
 )";
 
 // A fresh, empty folder under the temporary directory, named after the running test.
