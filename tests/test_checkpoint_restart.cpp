@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "talus/io/input_error.h"
 #include "talus/scenario/checkpoint_series.h"
 #include "test_checkpoint_cases.h"
 
@@ -73,6 +74,43 @@ TEST(CheckpointRestart, PouringCrossesWithManifoldsAreBitForBit) {
   const auto& pour = middle.run.at("pours").at(0);
   EXPECT_GT(pour.at("poured").get<std::size_t>(), 0u);
   EXPECT_LT(pour.at("poured").get<std::size_t>(), 8u);
+}
+
+// Counts the steps it sees; the count crosses a restart only through state() and restore().
+class StepCounter : public RunObserver {
+ public:
+  std::string name() const override { return "step_counter"; }
+  void after_step(World& /*world*/) override { ++steps_; }
+  void finish(World& /*world*/, const fs::path& /*out*/, nlohmann::json& summary) override {
+    summary["observed_steps"] = steps_;
+  }
+  nlohmann::json state() const override { return {{"steps", steps_}}; }
+  void restore(const nlohmann::json& state) override { steps_ = state.at("steps").get<std::uint64_t>(); }
+
+ private:
+  std::uint64_t steps_ = 0;
+};
+
+TEST(CheckpointRestart, ObserverStateCrossesTheRestart) {
+  const fs::path dir = testing::test_folder();
+  auto with_counter = [](Scenario& sc) { sc.observers.push_back(std::make_unique<StepCounter>()); };
+  testing::run_case(testing::kSettlingBox, dir / "a", 0.06, nullptr, "", with_counter);
+  const fs::path middle = CheckpointSeries::list(dir / "a" / "checkpoints").front();
+  auto checkpoint = std::make_shared<io::Checkpoint>(io::read_checkpoint(middle));
+  EXPECT_EQ(checkpoint->run.at("observers").at(0).at("state").at("steps"), checkpoint->world.steps);
+  testing::run_case(testing::kSettlingBox, dir / "b", 0, checkpoint, middle.string(), with_counter);
+  const nlohmann::json summary = nlohmann::json::parse(slurp(dir / "b" / "summary.json"));
+  EXPECT_EQ(summary.at("observed_steps"), summary.at("steps"));
+  EXPECT_GT(summary.at("steps").get<std::uint64_t>(), checkpoint->world.steps);
+
+  // A scenario without the observer cannot take the checkpoint over.
+  try {
+    testing::run_case(testing::kSettlingBox, dir / "c", 0, checkpoint, "mid.h5");
+    ADD_FAILURE() << "restart without the observer was accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_STREQ(e.what(), "mid.h5: checkpoint's run observers differ from the scenario's");
+  }
+  fs::remove_all(dir);
 }
 
 TEST(CheckpointRestart, CheckpointsDoNotChangeTheRun) {
