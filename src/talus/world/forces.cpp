@@ -138,7 +138,7 @@ void World::wall_forces(double memory_dt) {
       const double gap = dot(p.position[i] - origin[w], wall.normal);
       list.force_on_wall[e] = {};
       if (p.shape[i] != 0) {
-        if (!active[w] || gap >= r) {
+        if (!active[w] || gap >= r || (wall.bounded && gap < 0)) {
           wall_sub_[e].clear();
           continue;
         }
@@ -148,7 +148,7 @@ void World::wall_forces(double memory_dt) {
         list.force_on_wall[e] = -res.force_on_i;
         continue;
       }
-      if (!active[w] || gap >= r || !wall_faces(wall, origin[w], p.position[i], 0.0)) {
+      if (!active[w] || gap >= r || (wall.bounded && gap < 0) || !wall_faces(wall, origin[w], p.position[i], 0.0)) {
         mem.clear(e);
         continue;
       }
