@@ -171,7 +171,8 @@ std::vector<SubContactList> read_points(const Hdf5Reader& h5, const std::string&
 
 void write_world(Hdf5Writer& h5, const WorldState& s) {
   const ParticleStore& p = s.particles;
-  h5.write("world/counters", std::vector<std::uint64_t>{s.next_gid, s.steps, s.rebuilds});
+  h5.write("world/counters", std::vector<std::uint64_t>{s.next_gid, s.steps, s.rebuilds,
+                                                       static_cast<std::uint64_t>(s.tangential_model)});
   h5.write("world/times", std::vector<double>{s.time, s.time_at_build, s.skin, s.gravity.x, s.gravity.y, s.gravity.z});
   h5.write("world/particles/position", flat(p.position), 3);
   h5.write("world/particles/velocity", flat(p.velocity), 3);
@@ -207,10 +208,12 @@ WorldState read_world(const Hdf5Reader& h5) {
   WorldState s;
   const std::vector<std::uint64_t> counters = h5.read_u64("world/counters");
   const std::vector<double> times = h5.read_double("world/times");
-  if (counters.size() != 3 || times.size() != 6) throw std::runtime_error(h5.path().string() + ": world counters damaged");
+  if (counters.size() != 4 || times.size() != 6 || counters[3] > static_cast<std::uint64_t>(TangentialModel::elastic_spring))
+    throw std::runtime_error(h5.path().string() + ": world counters damaged");
   s.next_gid = static_cast<std::uint32_t>(counters[0]);
   s.steps = counters[1];
   s.rebuilds = counters[2];
+  s.tangential_model = static_cast<TangentialModel>(counters[3]);
   s.time = times[0];
   s.time_at_build = times[1];
   s.skin = times[2];

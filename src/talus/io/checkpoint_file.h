@@ -9,7 +9,7 @@
 //   /run                     text: JSON of the run loop, the pours and the observers
 //   /timeseries              rows x columns: the time-series rows written so far
 //   /timeseries_columns      text: JSON array of the column names
-//   /world/counters          next_gid, steps, rebuilds
+//   /world/counters          next_gid, steps, rebuilds, tangential model (0 memory, 1 memoryless, 2 elastic_spring)
 //   /world/times             time, time of the last list build, skin, gravity x y z
 //   /world/particles/*       position, velocity, angular_velocity, force, torque (n x 3),
 //                            orientation (n x 4, w x y z), radius, inv_mass, mass, inv_inertia,

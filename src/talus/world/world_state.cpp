@@ -54,6 +54,7 @@ WorldState World::capture_state() {
   s.steps = steps_;
   s.rebuilds = rebuilds_;
   s.gravity = settings_.gravity;
+  s.tangential_model = settings_.tangential_model;
   s.walls = walls_;
   s.wall_force = wall_force_;
   s.position_at_build = position_at_build_;
@@ -93,6 +94,7 @@ void World::restore_state(const WorldState& s) {
   next_gid_ = s.next_gid;
   steps_ = s.steps;
   settings_.gravity = s.gravity;
+  settings_.tangential_model = s.tangential_model;
   walls_ = s.walls;
   skin_ = s.skin;
   pairs_ = PairList{};

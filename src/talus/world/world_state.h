@@ -14,6 +14,7 @@
 
 #include "talus/body/particles.h"
 #include "talus/collide/pair_list.h"
+#include "talus/contact/contact_law.h"
 #include "talus/world/sub_contacts.h"
 #include "talus/world/wall.h"
 
@@ -27,6 +28,7 @@ struct WorldState {
   std::uint64_t steps = 0;
   std::uint64_t rebuilds = 0;
   Vec3 gravity;                     ///< m/s^2 (a run may tilt it)
+  TangentialModel tangential_model = TangentialModel::memory;  ///< a run may switch it
   std::vector<Wall> walls;
   std::vector<Vec3> wall_force;     ///< N, per wall, at the last step
 
