@@ -12,6 +12,7 @@
 #include "talus/contact/parameter_procedure.h"
 #include "talus/io/checkpoint_file.h"
 #include "talus/io/input_error.h"
+#include "talus/io/json_file.h"
 #include "talus/io/scenario_file.h"
 #include "talus/scenario/checkpoint_series.h"
 #include "talus/scenario/run_checkpoint.h"
@@ -126,6 +127,19 @@ std::size_t expected_checkpoint_bytes(Scenario& scenario, const std::string& tom
   return now > 0 ? bytes * later / now : bytes;
 }
 
+// Measures a finished run again from its files, with the scenario as run plus any overrides.
+int command_analyze(const std::filesystem::path& dir, const std::vector<std::string>& overrides) {
+  io::ScenarioFile file = open_scenario((dir / "scenario.toml").string(), overrides);
+  Scenario scenario = load_scenario(file);
+  nlohmann::json summary = io::read_json(dir / "summary.json");
+  bool any = false;
+  for (auto& o : scenario.observers) any = o->reanalyse(dir, summary) || any;
+  if (!any) throw std::runtime_error(dir.string() + ": nothing to analyse (no dam-break states in the folder)");
+  io::write_json(dir / "summary.json", summary);
+  std::printf("%s: summary.json updated\n", dir.string().c_str());
+  return 0;
+}
+
 int command_check(const std::string& path, const std::vector<std::string>& overrides) {
   io::ScenarioFile file = open_scenario(path, overrides);
   Scenario scenario = load_scenario(file);
@@ -174,6 +188,9 @@ int main(int argc, char** argv) {
 
   std::string view = "side", picture;
   double render_time = -1;
+  CLI::App* analyze = app.add_subcommand("analyze", "Measure a finished run again from its results folder");
+  analyze->add_option("dir", path, "Results folder")->required();
+  analyze->add_option("--set", overrides, "Override a scenario value, e.g. dam_break.pixel=1e-3");
   CLI::App* render = app.add_subcommand("render", "Draw a results folder's configuration as a PNG (needs run.vtk_interval)");
   render->add_option("dir", path, "Results folder")->required();
   render->add_option("--time", render_time, "Simulated time (s); default: the last frame");
@@ -210,6 +227,7 @@ int main(int argc, char** argv) {
     if (*run) return command_run(path, overrides, out, overwrite, quiet, threads, run_start);
     if (*resume) return command_resume(resume_dir, quiet, threads, run_start.checkpoint_interval);
     if (*check) return command_check(path, overrides);
+    if (*analyze) return command_analyze(path, overrides);
     if (*plot) return run_tool("plot_timeseries.py", {path});
     if (*render) {
       std::vector<std::string> args = {path, "--view", view};

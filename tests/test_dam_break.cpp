@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cstdlib>
 #include <random>
 
 #include <nlohmann/json.hpp>
@@ -86,6 +87,16 @@ TEST(DamBreak, SphereColumnRunsOutWithinPublishedScatter) {
   // A frictional packing of spheres has 4 to 6 contacts per particle.
   EXPECT_GT(s["coordination_number"].get<double>(), 3.0);
   EXPECT_LT(s["coordination_number"].get<double>(), 6.5);
+
+  // `talus analyze` measures again from the saved states: the same figures come back.
+  const fs::path dir = fs::path(TALUS_BINARY_DIR) / "test-output" / "dam_break_spheres";
+  const std::string command = std::string(TALUS_BINARY_DIR) + "/talus analyze " + dir.string() + " > /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream in(dir / "summary.json");
+  const nlohmann::json again = nlohmann::json::parse(in);
+  EXPECT_DOUBLE_EQ(again["runout"].get<double>(), s["runout"].get<double>());
+  EXPECT_DOUBLE_EQ(again["final_height"].get<double>(), s["final_height"].get<double>());
+  EXPECT_EQ(again["regime"], s["regime"]);
 }
 
 TEST(DamBreak, SameSeedSameColumn) {

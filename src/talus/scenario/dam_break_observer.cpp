@@ -10,6 +10,7 @@
 #include "talus/analysis/force_network.h"
 #include "talus/analysis/force_network_pdf.h"
 #include "talus/io/csv_writer.h"
+#include "talus/io/json_file.h"
 #include "talus/io/snapshot_json.h"
 
 namespace talus {
@@ -136,6 +137,7 @@ void DamBreakObserver::open_gate(World& world, const Diagnostics& d, bool static
     std::fprintf(stderr, "dam_break: column not static after %.3g s (fastest particle %.3g m/s); opening the gate\n",
                  gate_time_, d.max_speed);
 
+  io::write_json(out_ / "state_before_gate.json", snapshot_to_json(initial_));
   write_pdf(out_ / "force_pdf.csv", linear, log);
   io::CsvWriter fabric(out_ / "fabric.csv", {"theta", "density"});
   for (std::size_t k = 0; k < rose.centres.size(); ++k) fabric.row({rose.centres[k], rose.density[k]});
@@ -160,6 +162,14 @@ void DamBreakObserver::finish(World& world, const std::filesystem::path& out, nl
     return;
   }
   const Snapshot final = world.snapshot();
+  io::write_json(out / "state_final.json", snapshot_to_json(final));
+  summary["dam_break"] = db;
+  measure(final, world.time(), out, summary);
+}
+
+void DamBreakObserver::measure(const Snapshot& final, double final_time, const std::filesystem::path& out,
+                               nlohmann::json& summary) {
+  json& db = summary["dam_break"];
   collapse::CollapseSetup cs;
   cs.initial_length = setup_.gate_position;
   cs.box_length = setup_.box_length;
@@ -181,7 +191,7 @@ void DamBreakObserver::finish(World& world, const std::filesystem::path& out, nl
   summary["regime"] = collapse::to_string(m.regime.regime);
   summary["coordination_number"] = before_gate_["whole"]["coordination_points"];
   db["gate_open_time"] = gate_time_;
-  db["collapse_duration"] = world.time() - gate_time_;
+  db["collapse_duration"] = final_time - gate_time_;
   db["time_scale"] = collapse::collapse_time_scale(m.initial_height.mean, norm(initial_.gravity));
   db["initial_height_q1"] = m.initial_height.q1;
   db["initial_height_q3"] = m.initial_height.q3;
@@ -198,12 +208,13 @@ void DamBreakObserver::finish(World& world, const std::filesystem::path& out, nl
   db["displaced_fraction"] = m.regime.displaced_fraction;
   db["particle_size"] = cs.particle_size;
   db["before_gate"] = before_gate_;
-  summary["dam_break"] = db;
 
-  io::CsvWriter speeds(out / "collapse_speeds.csv", {"time", "time_over_tau", "mean_speed", "mean_angular_speed",
+  if (!speeds_.empty()) {
+    io::CsvWriter speeds(out / "collapse_speeds.csv", {"time", "time_over_tau", "mean_speed", "mean_angular_speed",
                                                       "speed_over_sqrt_gH0", "angular_speed_times_tau"});
-  for (const auto& row : speeds_) speeds.row(std::span<const double>(row));
-  speeds.close();
+    for (const auto& row : speeds_) speeds.row(std::span<const double>(row));
+    speeds.close();
+  }
   io::CsvWriter runout(out / "runout_profile.csv", {"x", "intensity"});
   for (std::size_t k = 0; k < m.runout.profile.x.size(); ++k) runout.row({m.runout.profile.x[k], m.runout.profile.intensity[k]});
   runout.close();
@@ -211,6 +222,20 @@ void DamBreakObserver::finish(World& world, const std::filesystem::path& out, nl
   for (std::size_t k = 0; k < m.final_height.y.size(); ++k)
     heights.row({m.final_height.y[k], k < m.initial_height.h.size() ? m.initial_height.h[k] : 0.0, m.final_height.h[k]});
   heights.close();
+}
+
+bool DamBreakObserver::reanalyse(const std::filesystem::path& dir, nlohmann::json& summary) {
+  const auto before = dir / "state_before_gate.json", after = dir / "state_final.json";
+  if (!std::filesystem::exists(before) || !std::filesystem::exists(after) || !summary.contains("dam_break"))
+    return false;
+  initial_ = snapshot_from_json(io::read_json(before));
+  const Snapshot final = snapshot_from_json(io::read_json(after));
+  const json& db = summary["dam_break"];
+  gate_time_ = db.at("gate_open_time").get<double>();
+  before_gate_ = db.at("before_gate");
+  speeds_.clear();  // collapse_speeds.csv stays as the run wrote it
+  measure(final, gate_time_ + db.at("collapse_duration").get<double>(), dir, summary);
+  return true;
 }
 
 nlohmann::json DamBreakObserver::state() const {

@@ -24,6 +24,7 @@ class DamBreakObserver : public RunObserver {
   void start(World& world, const std::filesystem::path& out) override;
   bool output(World& world, const Diagnostics& d) override;
   void finish(World& world, const std::filesystem::path& out, nlohmann::json& summary) override;
+  bool reanalyse(const std::filesystem::path& dir, nlohmann::json& summary) override;
   nlohmann::json state() const override;
   void restore(const nlohmann::json& state) override;
 
@@ -31,6 +32,8 @@ class DamBreakObserver : public RunObserver {
   enum class Phase { settling, collapsing, over };
   void open_gate(World& world, const Diagnostics& d, bool static_reached);
   double particle_size() const;
+  // The end-of-run measurements of a final state, into summary.json and the profile files.
+  void measure(const Snapshot& final, double final_time, const std::filesystem::path& out, nlohmann::json& summary);
 
   DamBreakSetup setup_;
   DamBreakWalls walls_;
