@@ -1,4 +1,4 @@
-// The talus command line: run, check, ensemble, sweep, render, plot and params.
+// The talus command line: run, resume, check, analyze, ensemble, sweep, render, plot and params.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -6,11 +6,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 #include "talus/contact/parameter_procedure.h"
+#include "talus/io/checkpoint_file.h"
 #include "talus/io/input_error.h"
 #include "talus/io/json_file.h"
 #include "talus/io/scenario_file.h"
+#include "talus/scenario/checkpoint_series.h"
+#include "talus/scenario/run_checkpoint.h"
 #include "talus/scenario/run_loop.h"
 #include "talus/scenario/scenario.h"
 
@@ -24,23 +29,79 @@ io::ScenarioFile open_scenario(const std::string& path, const std::vector<std::s
   return file;
 }
 
-int command_run(const std::string& path, const std::vector<std::string>& overrides, std::string out, bool overwrite,
-                bool quiet, int threads) {
-  io::ScenarioFile file = open_scenario(path, overrides);
+// How a run starts: afresh, or from a checkpoint (`run --restart`, `resume`).
+struct RunStart {
+  std::string restart;                        ///< checkpoint file; empty: from the scenario's start
+  std::optional<double> checkpoint_interval;  ///< s, --checkpoint-interval
+};
+
+// The scenario text without the comment lines to_toml() heads it with (they name the source).
+std::string scenario_body(const std::string& toml) {
+  std::size_t pos = 0;
+  while (pos < toml.size() && (toml[pos] == '#' || toml[pos] == '\n')) {
+    const std::size_t end = toml.find('\n', pos);
+    pos = end == std::string::npos ? toml.size() : end + 1;
+  }
+  return toml.substr(pos);
+}
+
+// The results folder a checkpoint belongs to (DIR of DIR/checkpoints/NAME.h5), or empty.
+std::filesystem::path results_dir_of(const std::filesystem::path& checkpoint) {
+  const std::filesystem::path parent = checkpoint.parent_path();
+  return parent.filename() == "checkpoints" ? parent.parent_path() : std::filesystem::path();
+}
+
+int run_file(io::ScenarioFile& file, const std::string& label, std::string out, bool overwrite, bool quiet, int threads,
+             const RunStart& run_start) {
   Scenario scenario = load_scenario(file);
-  if (out.empty()) out = "results/" + std::filesystem::path(path).stem().string();
   RunOptions options;
+  options.scenario_toml = file.to_toml();
+  if (!run_start.restart.empty()) {
+    auto checkpoint = std::make_shared<io::Checkpoint>(io::read_checkpoint(run_start.restart));
+    if (scenario_body(checkpoint->scenario_toml) != scenario_body(options.scenario_toml))
+      std::fprintf(stderr, "talus: note: %s differs from the scenario %s was written with; the run goes on with %s\n",
+                   label.c_str(), run_start.restart.c_str(), label.c_str());
+    const std::filesystem::path home = results_dir_of(run_start.restart);
+    if (out.empty() && !home.empty()) out = home.string();
+    // Resuming in the checkpoint's own folder replaces its files with the same run's.
+    if (!home.empty() && std::filesystem::weakly_canonical(home) == std::filesystem::weakly_canonical(out))
+      overwrite = true;
+    options.restart = std::move(checkpoint);
+    // latest.h5 moves on; the summary names the file it pointed to.
+    const std::filesystem::path source = run_start.restart;
+    options.restart_source =
+        std::filesystem::is_symlink(source) ? (source.parent_path() / std::filesystem::read_symlink(source)).string()
+                                            : source.string();
+  }
+  if (out.empty()) out = "results/" + std::filesystem::path(label).stem().string();
   options.out = out;
   options.overwrite = overwrite;
   options.quiet = quiet;
   options.threads = threads;
-  options.scenario_toml = file.to_toml();
+  options.checkpoint_interval = run_start.checkpoint_interval;
   install_stop_handlers();
   const RunOutcome outcome = run_scenario(scenario, options);
   if (!quiet)
     std::fprintf(stderr, "talus: %s after %.1f s of wall time (%s); results in %s\n", outcome.stop_reason.c_str(),
-                 outcome.wall_seconds, path.c_str(), out.c_str());
+                 outcome.wall_seconds, label.c_str(), out.c_str());
   return outcome.stop_reason == "interrupted" ? 130 : 0;
+}
+
+int command_run(const std::string& path, const std::vector<std::string>& overrides, const std::string& out,
+                bool overwrite, bool quiet, int threads, const RunStart& run_start) {
+  io::ScenarioFile file = open_scenario(path, overrides);
+  return run_file(file, path, out, overwrite, quiet, threads, run_start);
+}
+
+// `talus resume DIR`: the newest checkpoint of DIR, with the scenario stored in it, into DIR.
+int command_resume(const std::string& dir, bool quiet, int threads, std::optional<double> checkpoint_interval) {
+  const std::filesystem::path latest = CheckpointSeries::latest(dir);
+  if (!std::filesystem::exists(latest))
+    throw io::InputError(dir + ": no checkpoint to resume from (" + latest.string() + " is missing)");
+  const io::Checkpoint checkpoint = io::read_checkpoint(latest);
+  io::ScenarioFile file = io::ScenarioFile::from_string(checkpoint.scenario_toml, latest.string() + ":/scenario");
+  return run_file(file, (std::filesystem::path(dir) / "scenario.toml").string(), dir, true, quiet, threads,
+                  {latest.string(), checkpoint_interval});
 }
 
 // The figures are drawn by the project's matplotlib scripts (Debian python3-matplotlib).
@@ -54,6 +115,16 @@ int run_tool(const std::string& script, std::vector<std::string> args) {
   execv(argv[0], argv.data());
   std::perror("talus: cannot start /usr/bin/python3");
   return 1;
+}
+
+// A checkpoint of the initial state, scaled to the particles still to be poured: contact
+// memories grow with the contacts, so this is a floor more than a forecast.
+std::size_t expected_checkpoint_bytes(Scenario& scenario, const std::string& toml) {
+  const std::size_t now = scenario.world->owned_count();
+  std::size_t later = now;
+  for (const Pouring& p : scenario.pours) later += p.total() - p.poured();
+  const std::size_t bytes = io::checkpoint_image(capture_checkpoint(scenario, LoopState{}, toml, {"time"})).size();
+  return now > 0 ? bytes * later / now : bytes;
 }
 
 // Measures a finished run again from its files, with the scenario as run plus any overrides.
@@ -88,6 +159,7 @@ std::string plot_tool(const std::filesystem::path& dir) {
 int command_check(const std::string& path, const std::vector<std::string>& overrides) {
   io::ScenarioFile file = open_scenario(path, overrides);
   Scenario scenario = load_scenario(file);
+  scenario.derived["expected_checkpoint_bytes"] = expected_checkpoint_bytes(scenario, file.to_toml());
   std::cout << path << ": ok\n" << scenario.derived.dump(2) << "\n";
   return 0;
 }
@@ -110,6 +182,21 @@ int main(int argc, char** argv) {
   run->add_option("--set", overrides, "Override a scenario value: --set key=value (repeatable)");
   run->add_flag("--overwrite", overwrite, "Write into a non-empty results folder");
   run->add_flag("--quiet", quiet, "No progress output");
+  RunStart run_start;
+  run->add_option("--restart", run_start.restart, "Go on from a checkpoint (DIR/checkpoints/*.h5), bit for bit")
+      ->check(CLI::ExistingFile);
+  run->add_option("--checkpoint-interval", run_start.checkpoint_interval,
+                  "Simulated seconds between checkpoints (replaces run.checkpoint_interval)")
+      ->check(CLI::PositiveNumber);
+
+  std::string resume_dir;
+  CLI::App* resume = app.add_subcommand("resume", "Go on with a run from the newest checkpoint of its results folder");
+  resume->add_option("dir", resume_dir, "Results folder")->required();
+  resume->add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  resume->add_option("--checkpoint-interval", run_start.checkpoint_interval,
+                     "Simulated seconds between checkpoints (replaces the scenario's)")
+      ->check(CLI::PositiveNumber);
+  resume->add_flag("--quiet", quiet, "No progress output");
 
   CLI::App* check = app.add_subcommand("check", "Validate a scenario file and print derived quantities");
   check->add_option("file", path, "Scenario file (TOML)")->required();
@@ -168,7 +255,8 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   try {
-    if (*run) return command_run(path, overrides, out, overwrite, quiet, threads);
+    if (*run) return command_run(path, overrides, out, overwrite, quiet, threads, run_start);
+    if (*resume) return command_resume(resume_dir, quiet, threads, run_start.checkpoint_interval);
     if (*check) return command_check(path, overrides);
     if (*analyze) return command_analyze(path, overrides);
     if (*plot) return run_tool(plot_tool(path), {path});

@@ -20,10 +20,24 @@ VtkOutput::VtkOutput(std::filesystem::path directory, std::vector<CompositeShape
   if (!shapes_.empty()) shapes_series_.emplace(directory_ / "shapes.pvd");
 }
 
-std::filesystem::path VtkOutput::frame_file(const char* stem) const {
+std::filesystem::path VtkOutput::frame_file(const char* stem, std::size_t frame) const {
   char name[64];
-  std::snprintf(name, sizeof name, "%s_%06zu.vtu", stem, frames_);
+  std::snprintf(name, sizeof name, "%s_%06zu.vtu", stem, frame);
   return name;
+}
+
+void VtkOutput::resume(const std::vector<double>& times) {
+  auto earlier = [&](const char* stem) {
+    std::vector<PvdSeries::Entry> entries;
+    for (std::size_t k = 0; k < times.size(); ++k)
+      if (std::filesystem::exists(directory_ / frame_file(stem, k))) entries.push_back({times[k], frame_file(stem, k).string()});
+    return entries;
+  };
+  particles_.add_all(earlier("particles"));
+  if (shapes_series_) shapes_series_->add_all(earlier("shapes"));
+  contacts_.add_all(earlier("contacts"));
+  walls_.add_all(earlier("walls"));
+  frames_ = times.size();
 }
 
 void VtkOutput::write_frame(const Snapshot& snapshot, const std::vector<Wall>& walls) {

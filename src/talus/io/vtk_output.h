@@ -28,12 +28,16 @@ class VtkOutput {
 
   // Writes one frame at snapshot.time; walls are clipped to the snapshot's domain.
   void write_frame(const Snapshot& snapshot, const std::vector<Wall>& walls);
+  // A resumed run: frames go on from times.size(); the series list the earlier frames whose
+  // files are in the directory (all of them when the run resumes in its own folder).
+  void resume(const std::vector<double>& times);
 
   std::size_t frames() const { return frames_; }
   const std::filesystem::path& directory() const { return directory_; }
 
  private:
-  std::filesystem::path frame_file(const char* stem) const;
+  std::filesystem::path frame_file(const char* stem) const { return frame_file(stem, frames_); }
+  std::filesystem::path frame_file(const char* stem, std::size_t frame) const;
 
   std::filesystem::path directory_;
   std::vector<CompositeShape> shapes_;

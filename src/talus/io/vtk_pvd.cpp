@@ -19,6 +19,11 @@ void PvdSeries::add(double time, const std::filesystem::path& file) {
   atomic_write(path_, xml());
 }
 
+void PvdSeries::add_all(const std::vector<Entry>& entries) {
+  entries_.insert(entries_.end(), entries.begin(), entries.end());
+  atomic_write(path_, xml());
+}
+
 std::string PvdSeries::xml() const {
   std::string out =
       "<?xml version=\"1.0\"?>\n"

@@ -21,6 +21,8 @@ class PvdSeries {
   // Appends a frame and rewrites the .pvd. `file` may be absolute or relative to the .pvd's
   // directory. Throws std::system_error if the file cannot be written.
   void add(double time, const std::filesystem::path& file);
+  // Appends several frames (relative names) and rewrites the .pvd once: a resumed run.
+  void add_all(const std::vector<Entry>& entries);
 
   const std::filesystem::path& path() const { return path_; }
   const std::vector<Entry>& entries() const { return entries_; }

@@ -5,6 +5,8 @@
 #include <random>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "talus/world/world.h"
 
 namespace talus {
@@ -30,6 +32,10 @@ class Pouring {
   std::size_t pour_due(World& world);
   bool done() const { return poured_ >= spec_.total; }
   std::size_t poured() const { return poured_; }
+  std::size_t total() const { return spec_.total; }
+  // Checkpoints (pouring_state.cpp): the random generator, the count poured, the next event.
+  nlohmann::json state() const;
+  void restore(const nlohmann::json& state);
 
  private:
   PourSpec spec_;

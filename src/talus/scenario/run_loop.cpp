@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
+#include <limits>
 #include <cstdio>
 #include <optional>
 
@@ -13,10 +15,14 @@
 #include "talus/io/json_file.h"
 #include "talus/io/results_dir.h"
 #include "talus/io/vtk_output.h"
+#include "talus/scenario/checkpoint_series.h"
+#include "talus/scenario/run_checkpoint.h"
 
 namespace talus {
 
 namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
 
 volatile std::sig_atomic_t g_stop_requested = 0;
 extern "C" void request_stop(int) { g_stop_requested = 1; }
@@ -34,7 +40,7 @@ std::vector<std::string> timeseries_columns(const World& world) {
   return c;
 }
 
-void write_row(io::CsvWriter& csv, const World& world, const Diagnostics& d) {
+std::vector<double> row_values(const World& world, const Diagnostics& d) {
   std::vector<double> row = {d.time, static_cast<double>(world.step_count()), d.kinetic_translational,
                              d.kinetic_rotational, d.elastic_normal, d.elastic_tangential, d.elastic_rolling,
                              d.gravitational, d.elastic() > 0 ? d.kinetic() / d.elastic() : 0.0,
@@ -44,7 +50,7 @@ void write_row(io::CsvWriter& csv, const World& world, const Diagnostics& d) {
     const Vec3 f = world.wall_force(w);
     row.insert(row.end(), {f.x, f.y, f.z});
   }
-  csv.row(std::span<const double>(row));
+  return row;
 }
 
 nlohmann::json diagnostics_json(const Diagnostics& d) {
@@ -96,32 +102,59 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   io::atomic_write(opt.out / "scenario.toml", opt.scenario_toml);
   World& world = *sc.world;
   const RunControl& run = sc.control;
-  io::CsvWriter csv(opt.out / "timeseries.csv", timeseries_columns(world));
+  const std::vector<std::string> columns = timeseries_columns(world);
+  io::CsvWriter csv(opt.out / "timeseries.csv", columns);
   Progress progress(opt.quiet);
   const auto start = std::chrono::steady_clock::now();
 
   RunOutcome outcome{"end_time", 0};
-  write_row(csv, world, world.diagnostics());
+  LoopState loop;  // everything of the loop a checkpoint carries
+  auto record_row = [&](const Diagnostics& d) {
+    const std::vector<double> row = row_values(world, d);
+    csv.row(std::span<const double>(row));
+    loop.rows.insert(loop.rows.end(), row.begin(), row.end());
+  };
   std::optional<io::VtkOutput> vtk;
-  double next_frame = world.time();
   auto frame_due = [&] {
-    if (!vtk || world.time() < next_frame - 0.5 * world.settings().time_step) return;
+    if (!vtk || world.time() < loop.next_frame - 0.5 * world.settings().time_step) return;
     vtk->write_frame(world.snapshot(), world.walls());
-    next_frame += run.vtk_interval;
+    loop.vtk_times.push_back(world.time());
+    loop.next_frame += run.vtk_interval;
   };
   if (run.vtk_interval > 0) vtk.emplace(opt.out / "vtk", world.shapes());
   for (auto& o : sc.observers) o->start(world, opt.out);
-  frame_due();
-  double next_output = world.time() + run.output_interval;
+  const double checkpoint_interval = opt.checkpoint_interval.value_or(run.checkpoint_interval);
+  CheckpointSeries checkpoints(opt.out, run.checkpoint_keep);
+  double checkpoint_seconds = 0;
+  auto write_checkpoint = [&] {
+    const auto t0 = std::chrono::steady_clock::now();
+    checkpoints.write(capture_checkpoint(sc, loop, opt.scenario_toml, columns));
+    checkpoint_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  if (opt.restart) {
+    loop = restore_checkpoint(sc, *opt.restart, opt.restart_source, columns);
+    for (std::size_t r = 0; r + columns.size() <= loop.rows.size(); r += columns.size())
+      csv.row(std::span<const double>(loop.rows.data() + r, columns.size()));
+    if (vtk) vtk->resume(loop.vtk_times);
+    if (opt.checkpoint_interval || !std::isfinite(loop.next_checkpoint))  // a new interval starts now
+      loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
+  } else {
+    record_row(world.diagnostics());
+    loop.next_frame = world.time();
+    frame_due();
+    loop.next_output = world.time() + run.output_interval;
+    loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
+  }
+  const std::uint64_t first_step = world.step_count();
   const double dt = world.settings().time_step;
   while (world.time() < run.end_time - 0.5 * dt) {
     for (Pouring& pour : sc.pours) pour.pour_due(world);
     world.step();
     for (auto& o : sc.observers) o->after_step(world);
-    if (world.time() >= next_output - 0.5 * dt) {
-      next_output += run.output_interval;
+    if (world.time() >= loop.next_output - 0.5 * dt) {
+      loop.next_output += run.output_interval;
       const Diagnostics d = world.diagnostics();
-      write_row(csv, world, d);
+      record_row(d);
       if (run.stop_kinetic_energy && world.time() >= run.stop_min_time && d.kinetic() < *run.stop_kinetic_energy) {
         outcome.stop_reason = "kinetic_energy";
         break;
@@ -135,6 +168,10 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
       if (stop) break;
     }
     frame_due();
+    if (world.time() >= loop.next_checkpoint - 0.5 * dt) {
+      loop.next_checkpoint += checkpoint_interval;
+      write_checkpoint();
+    }
     if (g_stop_requested) {
       outcome.stop_reason = "interrupted";
       break;
@@ -143,8 +180,11 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   }
   progress.update(world, run.end_time, true);
   progress.finish();
+  // The final checkpoint holds the loop as it stands before the last row, so that a run
+  // restarted from it (say with a later end_time) goes on as this one would have.
+  if (checkpoints.written() == 0 || checkpoints.last_step() != world.step_count()) write_checkpoint();
   const Diagnostics d = world.diagnostics();
-  write_row(csv, world, d);
+  record_row(d);
   csv.close();
   outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -159,10 +199,16 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   summary["wall_contacts"] = d.wall_contacts;
   summary["energies"] = diagnostics_json(d);
   summary["wall_time"] = outcome.wall_seconds;
-  summary["steps_per_second"] = outcome.wall_seconds > 0 ? world.step_count() / outcome.wall_seconds : 0.0;
+  const double steps_run = static_cast<double>(world.step_count() - first_step);
+  summary["steps_per_second"] = outcome.wall_seconds > 0 ? steps_run / outcome.wall_seconds : 0.0;
   summary["threads"] = omp_get_max_threads();
   summary["neighbour_rebuilds"] = world.rebuilds();
   summary["derived"] = sc.derived;
+  summary["checkpoints"] = {{"written", checkpoints.written()},
+                            {"latest", CheckpointSeries::latest(opt.out).string()},
+                            {"last_bytes", checkpoints.last_bytes()},
+                            {"wall_time", checkpoint_seconds}};
+  if (opt.restart) summary["restarted_from"] = {{"checkpoint", opt.restart_source}, {"step", first_step}};
   nlohmann::json walls = nlohmann::json::object();
   for (std::size_t w = 0; w < world.walls().size(); ++w) {
     const Vec3 f = world.wall_force(w);

@@ -2,7 +2,11 @@
 // Runs a loaded scenario to its end and writes the results folder: a copy of the scenario,
 // summary.json and timeseries.csv, all written atomically.
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
+
+#include "talus/io/checkpoint_file.h"
 
 #include "talus/scenario/scenario.h"
 
@@ -14,6 +18,11 @@ struct RunOptions {
   bool quiet = false;                 ///< no progress output
   int threads = 0;                    ///< 0: OpenMP default
   std::string scenario_toml;          ///< the final scenario text, copied into the folder
+  std::optional<double> checkpoint_interval;  ///< s; replaces run.checkpoint_interval
+  // Resume from this checkpoint (read from `restart_source`): the run goes on exactly as the
+  // run that wrote it would have, and rewrites the folder's time series from its first row.
+  std::shared_ptr<const io::Checkpoint> restart;
+  std::string restart_source;
 };
 
 struct RunOutcome {
@@ -23,7 +32,8 @@ struct RunOutcome {
 
 RunOutcome run_scenario(Scenario& scenario, const RunOptions& options);
 
-// Set by SIGINT/SIGTERM: the run stops at the end of the current step and writes its results.
+// Set by SIGINT/SIGTERM: the run stops at the end of the current step and writes its results
+// and a final checkpoint.
 void install_stop_handlers();
 
 }  // namespace talus

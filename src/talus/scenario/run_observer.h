@@ -27,7 +27,9 @@ class RunObserver {
   // `talus analyze DIR`: measures again from the files a finished run left in `dir` (for example
   // with other thresholds set on the command line); returns false when it has nothing to redo.
   virtual bool reanalyse(const std::filesystem::path& /*dir*/, nlohmann::json& /*summary*/) { return false; }
-  // What a checkpoint must carry to resume the observer exactly where it was.
+  // What a checkpoint must carry to resume the observer exactly where it was. A restarted run
+  // calls start() on the scenario's fresh World, then puts the World back into the
+  // checkpoint's state (walls, gravity and contact model included), then calls restore().
   virtual nlohmann::json state() const { return nlohmann::json::object(); }
   virtual void restore(const nlohmann::json& /*state*/) {}
 };

@@ -180,6 +180,8 @@ Scenario load_scenario(ScenarioFile& f) {
   if (f.has("run.stop_kinetic_energy")) run.stop_kinetic_energy = f.get<double>("run.stop_kinetic_energy", io::positive);
   run.stop_min_time = f.get_or<double>("run.stop_min_time", 0.0, io::non_negative);
   run.vtk_interval = f.get_or<double>("run.vtk_interval", 0.0, io::non_negative);
+  run.checkpoint_interval = f.get_or<double>("run.checkpoint_interval", 0.0, io::non_negative);
+  run.checkpoint_keep = static_cast<std::size_t>(f.get_or<std::int64_t>("run.checkpoint_keep", 3, io::positive));
   const double steps_per_contact = f.get_or<double>("run.steps_per_contact", 50, io::in_range(10, 1e9));
 
   WorldSettings ws;

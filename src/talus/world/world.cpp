@@ -200,6 +200,7 @@ void World::rebuild() {
     wall_origin_at_build_[w] = walls_[w].origin_at(time_);
     wall_active_at_build_[w] = walls_[w].active(time_);
   }
+  time_at_build_ = time_;
   max_displacement_ = 0;
   ++rebuilds_;
 }

@@ -18,6 +18,7 @@
 #include "talus/world/sub_contacts.h"
 #include "talus/world/wall.h"
 #include "talus/world/wall_contacts.h"
+#include "talus/world/world_state.h"
 
 namespace talus {
 
@@ -110,6 +111,12 @@ class World {
   const PhaseTimer& timer() const { return timer_; }
   PhaseTimer& timer_mutable() { return timer_; }
 
+  // Checkpoints (world_state.cpp). capture_state() first prepares a World that awaits its
+  // set-up (particles added or walls changed since the last step); restore_state() puts a World
+  // built from the same scenario back into a captured state, so that it steps on bit for bit.
+  WorldState capture_state();
+  void restore_state(const WorldState& state);
+
   Diagnostics diagnostics() const;
   Snapshot snapshot() const;  ///< particles in global id order, contacts with their forces
   // Owned index of each global id (-1 if absent); valid until the next rebuild.
@@ -151,6 +158,7 @@ class World {
   std::vector<std::uint32_t> gid_at_build_;
   std::vector<Vec3> wall_origin_at_build_;
   std::vector<char> wall_active_at_build_;
+  double time_at_build_ = 0;  ///< s, the time the lists were built at (wall positions)
   double skin_ = 0;
   double time_ = 0;
   std::uint64_t steps_ = 0;

@@ -1,0 +1,307 @@
+#include "talus/io/checkpoint_file.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "talus/io/atomic_file.h"
+#include "talus/io/hdf5_file.h"
+#include "talus/io/input_error.h"
+
+namespace talus::io {
+
+namespace {
+
+constexpr const char* kFormat = "talus-checkpoint";
+
+// ---- flattening: Vec3 and Quat arrays as rows of doubles ----
+
+std::vector<double> flat(const std::vector<Vec3>& v) {
+  std::vector<double> out;
+  out.reserve(3 * v.size());
+  for (const Vec3& x : v) out.insert(out.end(), {x.x, x.y, x.z});
+  return out;
+}
+
+std::vector<Vec3> vec3s(const std::vector<double>& v) {
+  std::vector<Vec3> out(v.size() / 3);
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = {v[3 * k], v[3 * k + 1], v[3 * k + 2]};
+  return out;
+}
+
+std::vector<double> flat(const std::vector<Quat>& v) {
+  std::vector<double> out;
+  out.reserve(4 * v.size());
+  for (const Quat& q : v) out.insert(out.end(), {q.w, q.x, q.y, q.z});
+  return out;
+}
+
+std::vector<Quat> quats(const std::vector<double>& v) {
+  std::vector<Quat> out(v.size() / 4);
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = {v[4 * k], v[4 * k + 1], v[4 * k + 2], v[4 * k + 3]};
+  return out;
+}
+
+// ---- walls as JSON (doubles round-trip exactly through nlohmann's shortest form) ----
+
+nlohmann::json vec_json(const Vec3& v) { return {v.x, v.y, v.z}; }
+Vec3 json_vec(const nlohmann::json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()}; }
+
+nlohmann::json walls_json(const std::vector<Wall>& walls) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Wall& w : walls) {
+    const WallMotion& m = w.motion;
+    out.push_back({{"name", w.name}, {"origin", vec_json(w.origin)}, {"normal", vec_json(w.normal)},
+                   {"material", w.material}, {"bounded", w.bounded}, {"axis_u", vec_json(w.axis_u)},
+                   {"axis_v", vec_json(w.axis_v)}, {"half_extent_u", w.half_extent_u},
+                   {"half_extent_v", w.half_extent_v}, {"motion_kind", static_cast<int>(m.kind)},
+                   {"motion_start_time", m.start_time}, {"motion_direction", vec_json(m.direction)},
+                   {"motion_acceleration", m.acceleration}, {"motion_top_speed", m.top_speed}});
+  }
+  return out;
+}
+
+std::vector<Wall> json_walls(const nlohmann::json& j) {
+  std::vector<Wall> out;
+  for (const nlohmann::json& w : j) {
+    Wall wall;
+    wall.name = w.at("name").get<std::string>();
+    wall.origin = json_vec(w.at("origin"));
+    wall.normal = json_vec(w.at("normal"));
+    wall.material = w.at("material").get<int>();
+    wall.bounded = w.at("bounded").get<bool>();
+    wall.axis_u = json_vec(w.at("axis_u"));
+    wall.axis_v = json_vec(w.at("axis_v"));
+    wall.half_extent_u = w.at("half_extent_u").get<double>();
+    wall.half_extent_v = w.at("half_extent_v").get<double>();
+    const int kind = w.at("motion_kind").get<int>();
+    if (kind < 0 || kind > static_cast<int>(WallMotion::Kind::accelerated))
+      throw std::runtime_error("unknown wall motion " + std::to_string(kind));
+    wall.motion.kind = static_cast<WallMotion::Kind>(kind);
+    wall.motion.start_time = w.at("motion_start_time").get<double>();
+    wall.motion.direction = json_vec(w.at("motion_direction"));
+    wall.motion.acceleration = w.at("motion_acceleration").get<double>();
+    wall.motion.top_speed = w.at("motion_top_speed").get<double>();
+    out.push_back(wall);
+  }
+  return out;
+}
+
+// ---- contact memories and contact points ----
+
+void write_memory(Hdf5Writer& h5, const std::string& group, const ContactMemory& m) {
+  h5.write(group + "/spring", flat(m.spring), 3);
+  h5.write(group + "/normal_prev", flat(m.normal_prev), 3);
+  h5.write(group + "/rolling", flat(m.rolling), 3);
+}
+
+ContactMemory read_memory(const Hdf5Reader& h5, const std::string& group) {
+  ContactMemory m;
+  m.spring = vec3s(h5.read_double(group + "/spring", 3));
+  m.normal_prev = vec3s(h5.read_double(group + "/normal_prev", 3));
+  m.rolling = vec3s(h5.read_double(group + "/rolling", 3));
+  return m;
+}
+
+// Contact points of every entry in one table each: per entry how many, then the points in turn.
+void write_points(Hdf5Writer& h5, const std::string& group, const std::vector<SubContactList>& lists) {
+  std::vector<std::uint32_t> count, feature;
+  std::vector<std::uint16_t> part;
+  std::vector<Vec3> spring, normal_prev, point, force;
+  std::vector<double> overlap, share;
+  for (const SubContactList& list : lists) {
+    count.push_back(static_cast<std::uint32_t>(list.size()));
+    for (const SubContact& s : list) {
+      part.insert(part.end(), {s.part_i, s.part_j});
+      feature.push_back(s.feature);
+      spring.push_back(s.spring);
+      normal_prev.push_back(s.normal_prev);
+      point.push_back(s.point);
+      force.push_back(s.force);
+      overlap.push_back(s.overlap);
+      share.push_back(s.share);
+    }
+  }
+  h5.write(group + "/count", count);
+  h5.write(group + "/part", part, 2);
+  h5.write(group + "/feature", feature);
+  h5.write(group + "/spring", flat(spring), 3);
+  h5.write(group + "/normal_prev", flat(normal_prev), 3);
+  h5.write(group + "/point", flat(point), 3);
+  h5.write(group + "/force", flat(force), 3);
+  h5.write(group + "/overlap", overlap);
+  h5.write(group + "/share", share);
+}
+
+std::vector<SubContactList> read_points(const Hdf5Reader& h5, const std::string& group) {
+  const std::vector<std::uint32_t> count = h5.read_u32(group + "/count");
+  const std::vector<std::uint16_t> part = h5.read_u16(group + "/part", 2);
+  const std::vector<std::uint32_t> feature = h5.read_u32(group + "/feature");
+  const std::vector<Vec3> spring = vec3s(h5.read_double(group + "/spring", 3));
+  const std::vector<Vec3> normal_prev = vec3s(h5.read_double(group + "/normal_prev", 3));
+  const std::vector<Vec3> point = vec3s(h5.read_double(group + "/point", 3));
+  const std::vector<Vec3> force = vec3s(h5.read_double(group + "/force", 3));
+  const std::vector<double> overlap = h5.read_double(group + "/overlap");
+  const std::vector<double> share = h5.read_double(group + "/share");
+  std::size_t total = 0;
+  for (std::uint32_t c : count) total += c;
+  const std::size_t n = feature.size();
+  if (total != n || part.size() != 2 * n || spring.size() != n || normal_prev.size() != n || point.size() != n ||
+      force.size() != n || overlap.size() != n || share.size() != n)
+    throw std::runtime_error(h5.path().string() + ": " + group + ": contact point tables of different lengths");
+  std::vector<SubContactList> lists(count.size());
+  std::size_t k = 0;
+  for (std::size_t e = 0; e < lists.size(); ++e)
+    for (std::uint32_t c = 0; c < count[e]; ++c, ++k) {
+      SubContact s;
+      s.part_i = part[2 * k];
+      s.part_j = part[2 * k + 1];
+      s.feature = feature[k];
+      s.spring = spring[k];
+      s.normal_prev = normal_prev[k];
+      s.point = point[k];
+      s.force = force[k];
+      s.overlap = overlap[k];
+      s.share = share[k];
+      lists[e].push_back(s);
+    }
+  return lists;
+}
+
+// ---- the World ----
+
+void write_world(Hdf5Writer& h5, const WorldState& s) {
+  const ParticleStore& p = s.particles;
+  h5.write("world/counters", std::vector<std::uint64_t>{s.next_gid, s.steps, s.rebuilds,
+                                                       static_cast<std::uint64_t>(s.tangential_model)});
+  h5.write("world/times", std::vector<double>{s.time, s.time_at_build, s.skin, s.gravity.x, s.gravity.y, s.gravity.z});
+  h5.write("world/particles/position", flat(p.position), 3);
+  h5.write("world/particles/velocity", flat(p.velocity), 3);
+  h5.write("world/particles/angular_velocity", flat(p.angular_velocity), 3);
+  h5.write("world/particles/force", flat(p.force), 3);
+  h5.write("world/particles/torque", flat(p.torque), 3);
+  h5.write("world/particles/orientation", flat(p.orientation), 4);
+  h5.write("world/particles/radius", p.radius);
+  h5.write("world/particles/inv_mass", p.inv_mass);
+  h5.write("world/particles/mass", p.mass);
+  h5.write("world/particles/inv_inertia", flat(p.inv_inertia), 3);
+  h5.write("world/particles/species", p.species);
+  h5.write("world/particles/shape", p.shape);
+  h5.write("world/particles/gid", p.gid);
+  h5.write("world/position_at_build", flat(s.position_at_build), 3);
+  h5.write_text("world/walls", walls_json(s.walls).dump());
+  h5.write("world/wall_force", flat(s.wall_force), 3);
+
+  std::vector<std::uint32_t> pair_gid;
+  pair_gid.reserve(2 * s.pair_gid_i.size());
+  for (std::size_t e = 0; e < s.pair_gid_i.size(); ++e) pair_gid.insert(pair_gid.end(), {s.pair_gid_i[e], s.pair_gid_j[e]});
+  h5.write("contacts/pairs/gid", pair_gid, 2);
+  write_memory(h5, "contacts/pairs", s.pair_memory);
+  write_points(h5, "contacts/pairs/points", s.pair_sub);
+  h5.write("contacts/walls/gid", s.wall_gid);
+  h5.write("contacts/walls/wall", s.wall_index);
+  h5.write("contacts/walls/force", flat(s.wall_entry_force), 3);
+  write_memory(h5, "contacts/walls", s.wall_memory);
+  write_points(h5, "contacts/walls/points", s.wall_sub);
+}
+
+WorldState read_world(const Hdf5Reader& h5) {
+  WorldState s;
+  const std::vector<std::uint64_t> counters = h5.read_u64("world/counters");
+  const std::vector<double> times = h5.read_double("world/times");
+  if (counters.size() != 4 || times.size() != 6 || counters[3] > static_cast<std::uint64_t>(TangentialModel::elastic_spring))
+    throw std::runtime_error(h5.path().string() + ": world counters damaged");
+  s.next_gid = static_cast<std::uint32_t>(counters[0]);
+  s.steps = counters[1];
+  s.rebuilds = counters[2];
+  s.tangential_model = static_cast<TangentialModel>(counters[3]);
+  s.time = times[0];
+  s.time_at_build = times[1];
+  s.skin = times[2];
+  s.gravity = {times[3], times[4], times[5]};
+
+  ParticleStore& p = s.particles;
+  p.position = vec3s(h5.read_double("world/particles/position", 3));
+  p.velocity = vec3s(h5.read_double("world/particles/velocity", 3));
+  p.angular_velocity = vec3s(h5.read_double("world/particles/angular_velocity", 3));
+  p.force = vec3s(h5.read_double("world/particles/force", 3));
+  p.torque = vec3s(h5.read_double("world/particles/torque", 3));
+  p.orientation = quats(h5.read_double("world/particles/orientation", 4));
+  p.radius = h5.read_double("world/particles/radius");
+  p.inv_mass = h5.read_double("world/particles/inv_mass");
+  p.mass = h5.read_double("world/particles/mass");
+  p.inv_inertia = vec3s(h5.read_double("world/particles/inv_inertia", 3));
+  p.species = h5.read_i32("world/particles/species");
+  p.shape = h5.read_i32("world/particles/shape");
+  p.gid = h5.read_u32("world/particles/gid");
+  p.owned = p.position.size();
+  s.position_at_build = vec3s(h5.read_double("world/position_at_build", 3));
+  s.walls = json_walls(nlohmann::json::parse(h5.read_text("world/walls")));
+  s.wall_force = vec3s(h5.read_double("world/wall_force", 3));
+
+  const std::vector<std::uint32_t> pair_gid = h5.read_u32("contacts/pairs/gid", 2);
+  for (std::size_t e = 0; 2 * e < pair_gid.size(); ++e) {
+    s.pair_gid_i.push_back(pair_gid[2 * e]);
+    s.pair_gid_j.push_back(pair_gid[2 * e + 1]);
+  }
+  s.pair_memory = read_memory(h5, "contacts/pairs");
+  s.pair_sub = read_points(h5, "contacts/pairs/points");
+  s.wall_gid = h5.read_u32("contacts/walls/gid");
+  s.wall_index = h5.read_i32("contacts/walls/wall");
+  s.wall_entry_force = vec3s(h5.read_double("contacts/walls/force", 3));
+  s.wall_memory = read_memory(h5, "contacts/walls");
+  s.wall_sub = read_points(h5, "contacts/walls/points");
+  return s;
+}
+
+}  // namespace
+
+std::vector<char> checkpoint_image(const Checkpoint& c) {
+  Hdf5Writer h5;
+  h5.attribute("format", kFormat);
+  h5.attribute("format_version", std::int64_t{kCheckpointFormatVersion});
+  h5.attribute("talus_version", c.talus_version);
+  h5.attribute("step", static_cast<std::int64_t>(c.world.steps));
+  h5.write_text("scenario", c.scenario_toml);
+  h5.write_text("run", c.run.dump());
+  h5.write("timeseries", c.timeseries, std::max<std::size_t>(1, c.timeseries_columns.size()));
+  h5.write_text("timeseries_columns", nlohmann::json(c.timeseries_columns).dump());
+  write_world(h5, c.world);
+  return h5.image();
+}
+
+void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
+  const std::vector<char> bytes = checkpoint_image(c);
+  atomic_write(path, std::string_view(bytes.data(), bytes.size()));
+}
+
+Checkpoint read_checkpoint(const std::filesystem::path& path) {
+  try {
+    Hdf5Reader h5(path);
+    if (!h5.has_attribute("format") || h5.string_attribute("format") != kFormat)
+      throw InputError(path.string() + ": not a Talus checkpoint (no format = \"" + kFormat + "\" attribute)");
+    const std::int64_t version = h5.int_attribute("format_version");
+    const std::string written_by = h5.has_attribute("talus_version") ? h5.string_attribute("talus_version") : "?";
+    if (version != kCheckpointFormatVersion)
+      throw InputError(path.string() + ": checkpoint format version " + std::to_string(version) + " (written by talus " +
+                       written_by + "); this talus (" + TALUS_VERSION + ") reads version " +
+                       std::to_string(kCheckpointFormatVersion));
+    Checkpoint c;
+    c.talus_version = written_by;
+    c.scenario_toml = h5.read_text("scenario");
+    c.run = nlohmann::json::parse(h5.read_text("run"));
+    c.timeseries_columns = nlohmann::json::parse(h5.read_text("timeseries_columns")).get<std::vector<std::string>>();
+    c.timeseries = h5.read_double("timeseries", std::max<std::size_t>(1, c.timeseries_columns.size()));
+    c.world = read_world(h5);
+    return c;
+  } catch (const InputError&) {
+    throw;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path.string() + ": damaged checkpoint: " + e.what());
+  } catch (const std::exception& e) {
+    // Hdf5Reader's messages already start with the path.
+    const std::string what = e.what();
+    throw InputError(what.rfind(path.string(), 0) == 0 ? what : path.string() + ": " + what);
+  }
+}
+
+}  // namespace talus::io

@@ -1,0 +1,77 @@
+#include "talus/scenario/run_checkpoint.h"
+
+#include <cmath>
+
+#include "talus/io/input_error.h"
+
+namespace talus {
+
+namespace {
+
+// JSON has no infinity: "no further checkpoint" is null.
+nlohmann::json time_or_null(double t) { return std::isfinite(t) ? nlohmann::json(t) : nlohmann::json(); }
+double null_or_time(const nlohmann::json& j) {
+  return j.is_null() ? std::numeric_limits<double>::infinity() : j.get<double>();
+}
+
+}  // namespace
+
+io::Checkpoint capture_checkpoint(Scenario& sc, const LoopState& loop, const std::string& scenario_toml,
+                                  const std::vector<std::string>& columns) {
+  io::Checkpoint c;
+  c.scenario_toml = scenario_toml;
+  c.world = sc.world->capture_state();
+  c.timeseries_columns = columns;
+  c.timeseries = loop.rows;
+  nlohmann::json pours = nlohmann::json::array();
+  for (const Pouring& p : sc.pours) pours.push_back(p.state());
+  nlohmann::json observers = nlohmann::json::array();
+  for (const auto& o : sc.observers) observers.push_back({{"name", o->name()}, {"state", o->state()}});
+  c.run = {{"next_output", loop.next_output},
+           {"next_frame", loop.next_frame},
+           {"next_checkpoint", time_or_null(loop.next_checkpoint)},
+           {"vtk_times", loop.vtk_times},
+           {"pours", pours},
+           {"observers", observers}};
+  return c;
+}
+
+LoopState restore_checkpoint(Scenario& sc, const io::Checkpoint& c, const std::string& source,
+                             const std::vector<std::string>& columns) {
+  auto fail = [&](const std::string& what) -> void {
+    throw io::InputError(source + ": " + what);
+  };
+  try {
+    if (c.world.walls.size() != sc.world->walls().size())
+      fail("checkpoint has " + std::to_string(c.world.walls.size()) + " walls, the scenario " +
+           std::to_string(sc.world->walls().size()));
+    if (c.timeseries_columns != columns) fail("checkpoint's time-series columns differ from the scenario's");
+    const nlohmann::json& pours = c.run.at("pours");
+    if (pours.size() != sc.pours.size())
+      fail("checkpoint has " + std::to_string(pours.size()) + " pours, the scenario " + std::to_string(sc.pours.size()));
+    const nlohmann::json& observers = c.run.at("observers");
+    if (observers.size() != sc.observers.size()) fail("checkpoint's run observers differ from the scenario's");
+    for (std::size_t k = 0; k < observers.size(); ++k)
+      if (observers[k].at("name").get<std::string>() != sc.observers[k]->name())
+        fail("checkpoint has observer \"" + observers[k].at("name").get<std::string>() + "\" where the scenario has \"" +
+             sc.observers[k]->name() + "\"");
+
+    sc.world->restore_state(c.world);
+    for (std::size_t k = 0; k < pours.size(); ++k) sc.pours[k].restore(pours[k]);
+    for (std::size_t k = 0; k < observers.size(); ++k) sc.observers[k]->restore(observers[k].at("state"));
+
+    LoopState loop;
+    loop.next_output = c.run.at("next_output").get<double>();
+    loop.next_frame = c.run.at("next_frame").get<double>();
+    loop.next_checkpoint = null_or_time(c.run.at("next_checkpoint"));
+    loop.vtk_times = c.run.at("vtk_times").get<std::vector<double>>();
+    loop.rows = c.timeseries;
+    return loop;
+  } catch (const io::InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw io::InputError(source + ": checkpoint does not fit the scenario: " + e.what());
+  }
+}
+
+}  // namespace talus

@@ -1,0 +1,148 @@
+// World::capture_state and World::restore_state: the one place that knows which members make
+// up the state of a World (see world_state.h for why the lists are rebuilt, not stored).
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "talus/world/world.h"
+
+namespace talus {
+
+namespace {
+
+ParticleStore owned_copy(const ParticleStore& p) {
+  ParticleStore out = p;
+  out.drop_ghosts();
+  return out;
+}
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+
+void check_memory_size(const ContactMemory& stored, const ContactMemory& rebuilt, const char* list) {
+  require(stored.spring.size() == rebuilt.spring.size() && stored.normal_prev.size() == rebuilt.normal_prev.size() &&
+              stored.rolling.size() == rebuilt.rolling.size(),
+          std::string(list) + " contact memory does not fit the scenario's contact model");
+}
+
+void check_particles(const ParticleStore& p, int species, std::size_t shapes, std::uint32_t next_gid) {
+  const std::size_t n = p.owned;
+  require(p.size() == n && p.velocity.size() == n && p.angular_velocity.size() == n && p.force.size() == n &&
+              p.torque.size() == n && p.orientation.size() == n && p.radius.size() == n && p.inv_mass.size() == n &&
+              p.inv_inertia.size() == n && p.mass.size() == n && p.species.size() == n && p.shape.size() == n &&
+              p.gid.size() == n,
+          "particle arrays of different lengths");
+  for (std::size_t i = 0; i < n; ++i) {
+    require(p.species[i] >= 0 && p.species[i] < species, "particle species " + std::to_string(p.species[i]) +
+                                                             " not in the scenario (" + std::to_string(species) +
+                                                             " species)");
+    require(p.shape[i] >= 0 && static_cast<std::size_t>(p.shape[i]) < shapes,
+            "particle shape " + std::to_string(p.shape[i]) + " not in the scenario");
+    require(p.gid[i] < next_gid, "particle global id beyond the next free id");
+  }
+}
+
+}  // namespace
+
+WorldState World::capture_state() {
+  if (!ready_) prepare();
+  WorldState s;
+  s.particles = owned_copy(particles_);
+  s.next_gid = next_gid_;
+  s.time = time_;
+  s.steps = steps_;
+  s.rebuilds = rebuilds_;
+  s.gravity = settings_.gravity;
+  s.tangential_model = settings_.tangential_model;
+  s.walls = walls_;
+  s.wall_force = wall_force_;
+  s.position_at_build = position_at_build_;
+  s.time_at_build = time_at_build_;
+  s.skin = skin_;
+
+  const std::vector<std::uint32_t>& gid = particles_.gid;
+  for (std::size_t i = 0; i < pairs_.rows(); ++i)
+    for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
+      s.pair_gid_i.push_back(gid[i]);
+      s.pair_gid_j.push_back(gid[pairs_.neighbor(e)]);
+    }
+  s.pair_memory = pairs_.memory;
+  s.pair_sub = pair_sub_;
+  for (std::size_t i = 0; i < wall_pairs_.rows(); ++i)
+    for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e) {
+      s.wall_gid.push_back(gid[i]);
+      s.wall_index.push_back(wall_pairs_.wall(e));
+    }
+  s.wall_memory = wall_pairs_.memory;
+  s.wall_entry_force = wall_pairs_.force_on_wall;
+  s.wall_sub = wall_sub_;
+  return s;
+}
+
+void World::restore_state(const WorldState& s) {
+  const std::size_t n = s.particles.owned;
+  check_particles(s.particles, table_.species(), shapes_.size(), s.next_gid);
+  require(s.position_at_build.size() == n, "positions of the last neighbour-list build missing");
+  require(s.wall_force.size() == s.walls.size(), "wall forces do not match the walls");
+  for (const Wall& w : s.walls)
+    require(w.material >= 0 && w.material < table_.wall_materials(), "wall material not in the scenario");
+  require(s.skin > 0, "neighbour-list skin must be positive");
+
+  // Replay the last build: same positions, same order, same constants give the same lists.
+  particles_ = s.particles;
+  next_gid_ = s.next_gid;
+  steps_ = s.steps;
+  settings_.gravity = s.gravity;
+  settings_.tangential_model = s.tangential_model;
+  walls_ = s.walls;
+  skin_ = s.skin;
+  pairs_ = PairList{};
+  wall_pairs_ = WallContactList{};
+  pair_sub_.clear();
+  wall_sub_.clear();
+  gid_at_build_.clear();
+  particles_.position = s.position_at_build;
+  time_ = s.time_at_build;
+  rebuild();
+  require(std::equal(s.particles.gid.begin(), s.particles.gid.end(), particles_.gid.begin()) &&
+              std::equal(s.position_at_build.begin(), s.position_at_build.end(), particles_.position.begin()),
+          "particles are not in the order of their last neighbour-list build");
+
+  std::copy(s.particles.position.begin(), s.particles.position.end(), particles_.position.begin());
+  ghosts_.update_positions(particles_);
+  ghosts_.update_velocities(particles_);
+  time_ = s.time;
+  rebuilds_ = s.rebuilds;
+  wall_force_ = s.wall_force;
+
+  const std::vector<std::uint32_t>& gid = particles_.gid;
+  require(pairs_.entries() == s.pair_gid_i.size() && s.pair_gid_j.size() == s.pair_gid_i.size(),
+          "the rebuilt neighbour list has " + std::to_string(pairs_.entries()) + " entries, the stored one " +
+              std::to_string(s.pair_gid_i.size()));
+  for (std::size_t i = 0; i < pairs_.rows(); ++i)
+    for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e)
+      require(gid[i] == s.pair_gid_i[e] && gid[pairs_.neighbor(e)] == s.pair_gid_j[e],
+              "the rebuilt neighbour list differs from the stored one at entry " + std::to_string(e));
+  check_memory_size(s.pair_memory, pairs_.memory, "particle");
+  pairs_.memory = s.pair_memory;
+  require(s.pair_sub.size() == pair_sub_.size(), "contact points of rigid bodies do not match the neighbour list");
+  pair_sub_ = s.pair_sub;
+
+  require(wall_pairs_.entries() == s.wall_gid.size() && s.wall_index.size() == s.wall_gid.size() &&
+              s.wall_entry_force.size() == s.wall_gid.size(),
+          "the rebuilt wall-contact list has " + std::to_string(wall_pairs_.entries()) + " entries, the stored one " +
+              std::to_string(s.wall_gid.size()));
+  for (std::size_t i = 0; i < wall_pairs_.rows(); ++i)
+    for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e)
+      require(gid[i] == s.wall_gid[e] && wall_pairs_.wall(e) == s.wall_index[e],
+              "the rebuilt wall-contact list differs from the stored one at entry " + std::to_string(e));
+  check_memory_size(s.wall_memory, wall_pairs_.memory, "wall");
+  wall_pairs_.memory = s.wall_memory;
+  wall_pairs_.force_on_wall = s.wall_entry_force;
+  require(s.wall_sub.size() == wall_sub_.size(), "wall contact points of rigid bodies do not match the wall list");
+  wall_sub_ = s.wall_sub;
+  ready_ = true;
+}
+
+}  // namespace talus
