@@ -7,7 +7,8 @@ namespace talus {
 
 void CompositeShape::add(ConvexShape shape, const Pose& pose) {
   bounding_radius = std::max(bounding_radius, norm(pose.position) + shape.bounding_radius);
-  parts.push_back({std::move(shape), pose});
+  const BoundingCapsule capsule = bounding_capsule(shape);
+  parts.push_back({std::move(shape), pose, capsule});
 }
 
 CompositeShape make_huet_cross(double length, double width, double height, double crust) {

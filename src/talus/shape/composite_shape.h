@@ -6,6 +6,7 @@
 // Lp x Wp x Hp = 27 x 2 x 3 mm crossing at their centres, arms along x and y, thickness along z.
 #include <vector>
 
+#include "talus/shape/bounding_capsule.h"
 #include "talus/shape/convex_shape.h"
 #include "talus/shape/pose.h"
 
@@ -14,6 +15,7 @@ namespace talus {
 struct CompositePart {
   ConvexShape shape;
   Pose pose;  ///< part frame in the body frame
+  BoundingCapsule capsule;  ///< in the part frame: culls part pairs before the narrow phase
 };
 
 struct CompositeShape {
