@@ -19,7 +19,7 @@ struct CrossBoxSetup {
   Vec3 box{0.2, 0.2, 0.05};      ///< m: floor size, and the height of the first insertion region
   Vec3 domain_hi{0.2, 0.2, 1.0}; ///< m: far corner of the domain (beyond the box for a flow)
   double crust = 1e-4;           ///< m: the scenario default, 5 % of the arm width
-  double insert_growth = 2e-5;   ///< m the insertion region rises per rejected attempt
+  double insert_growth = 5e-7;   ///< m the insertion region rises per rejected attempt (packing fraction ~0.07)
   double insert_clearance = 2e-4;///< m between placed crosses
   std::uint64_t seed = 1;
   bool manifold = true;          ///< up to 4 points per face contact (k/n each)

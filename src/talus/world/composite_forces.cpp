@@ -9,6 +9,7 @@
 // per-entry lists have grown.
 #include <x86intrin.h>
 
+#include <cmath>
 #include <variant>
 
 #include "talus/collide/box_box.h"
@@ -150,6 +151,27 @@ void apply_point(const PointGeometry& pg, double share, const ContactParams& par
   total.normal_force += r.normal_force;
 }
 
+// Body-level cull: the 6 face axes of the two bodies' part-bounding boxes (Gottschalk et al.
+// 1996). A separating face axis proves no part pair can touch.
+bool body_boxes_apart(const CompositeShape& si, const Pose& bi, const CompositeShape& sj, const Pose& bj) {
+  Vec3 A[3], B[3];
+  rotation_axes(bi.orientation, A);
+  rotation_axes(bj.orientation, B);
+  const Vec3 ci = bi.position + A[0] * si.box_centre.x + A[1] * si.box_centre.y + A[2] * si.box_centre.z;
+  const Vec3 cj = bj.position + B[0] * sj.box_centre.x + B[1] * sj.box_centre.y + B[2] * sj.box_centre.z;
+  const Vec3 d = cj - ci;
+  const Vec3& ha = si.box_half;
+  const Vec3& hb = sj.box_half;
+  double absR[3][3];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) absR[i][j] = std::abs(dot(A[i], B[j]));
+    if (std::abs(dot(d, A[i])) > ha[i] + hb[0] * absR[i][0] + hb[1] * absR[i][1] + hb[2] * absR[i][2]) return true;
+  }
+  for (int j = 0; j < 3; ++j)
+    if (std::abs(dot(d, B[j])) > hb[j] + ha[0] * absR[0][j] + ha[1] * absR[1][j] + ha[2] * absR[2][j]) return true;
+  return false;
+}
+
 // Last step's list, moved aside while this step's is written (per thread, reused).
 SubContactList& previous_scratch(const SubContactList& contacts) {
   thread_local SubContactList previous;
@@ -171,6 +193,15 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   const CompositeShape& si = shape_of(shapes_, p.shape[i], p.radius[i], scratch_i);
   const CompositeShape& sj = shape_of(shapes_, p.shape[j], p.radius[j], scratch_j);
   const Pose body_i{p.position[i], p.orientation[i]}, body_j{p.position[j], p.orientation[j]};
+  if (body_boxes_apart(si, body_i, sj, body_j)) {
+    contacts.clear();
+    if (profile) {
+      CompositeStats& st = composite_stats_slot();
+      ++st.body_pairs;
+      st.total_ticks += ticks(profile) - t_start;
+    }
+    return {};
+  }
   const ContactParams& params = table_.pair(p.species[i], p.species[j]);
   const double reduced_mass = 1.0 / (p.inv_mass[i] + p.inv_mass[j]);
   const double reduced_radius = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
@@ -178,8 +209,8 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   const SubContactList& previous = previous_scratch(contacts);
   contacts.clear();
 
-  // Parts placed once per body pair; composites of up to 8 parts on the stack.
-  constexpr std::size_t kMaxParts = 8;
+  // Parts placed once per body pair; composites of up to 4 parts on the stack.
+  constexpr std::size_t kMaxParts = 4;
   thread_local std::vector<PlacedPart> overflow_i, overflow_j;
   PlacedPart stack_i[kMaxParts], stack_j[kMaxParts];
   PlacedPart* placed_i = stack_i;
