@@ -10,6 +10,8 @@
 #include <x86intrin.h>
 
 #include <cmath>
+#include <new>
+#include <type_traits>
 #include <variant>
 
 #include "talus/collide/box_box.h"
@@ -41,6 +43,13 @@ struct PlacedPart {
   double capsule_radius = 0;
   bool is_box = false;
 };
+
+// Storage for a PlacedPart constructed only when needed (no zeroing of unused slots).
+union PlacedSlot {
+  PlacedPart part;
+  PlacedSlot() {}
+};
+static_assert(std::is_trivially_destructible_v<PlacedPart>);
 
 PlacedPart place(const CompositePart& part, const Pose& body) {
   PlacedPart p;
@@ -151,15 +160,26 @@ void apply_point(const PointGeometry& pg, double share, const ContactParams& par
   total.normal_force += r.normal_force;
 }
 
+// A body's rotation as its three axes in the world (columns of the rotation matrix).
+struct BodyFrame {
+  Vec3 position;
+  Vec3 axis[3];
+  Vec3 to_world(const Vec3& v) const { return axis[0] * v.x + axis[1] * v.y + axis[2] * v.z; }
+};
+
+BodyFrame body_frame(const Vec3& x, const Quat& q) {
+  BodyFrame f;
+  f.position = x;
+  rotation_axes(q, f.axis);
+  return f;
+}
+
 // Body-level cull: the 6 face axes of the two bodies' part-bounding boxes (Gottschalk et al.
 // 1996). A separating face axis proves no part pair can touch.
-bool body_boxes_apart(const CompositeShape& si, const Pose& bi, const CompositeShape& sj, const Pose& bj) {
-  Vec3 A[3], B[3];
-  rotation_axes(bi.orientation, A);
-  rotation_axes(bj.orientation, B);
-  const Vec3 ci = bi.position + A[0] * si.box_centre.x + A[1] * si.box_centre.y + A[2] * si.box_centre.z;
-  const Vec3 cj = bj.position + B[0] * sj.box_centre.x + B[1] * sj.box_centre.y + B[2] * sj.box_centre.z;
-  const Vec3 d = cj - ci;
+bool body_boxes_apart(const CompositeShape& si, const BodyFrame& fi, const CompositeShape& sj, const BodyFrame& fj) {
+  const Vec3* A = fi.axis;
+  const Vec3* B = fj.axis;
+  const Vec3 d = fj.position + fj.to_world(sj.box_centre) - fi.position - fi.to_world(si.box_centre);
   const Vec3& ha = si.box_half;
   const Vec3& hb = sj.box_half;
   double absR[3][3];
@@ -170,6 +190,15 @@ bool body_boxes_apart(const CompositeShape& si, const Pose& bi, const CompositeS
   for (int j = 0; j < 3; ++j)
     if (std::abs(dot(d, B[j])) > hb[j] + ha[0] * absR[0][j] + ha[1] * absR[1][j] + ha[2] * absR[2][j]) return true;
   return false;
+}
+
+// A part's culling capsule in the world: centre and half-axis (the radius is the part's).
+struct WorldCapsule {
+  Vec3 centre, half_axis;
+};
+
+WorldCapsule world_capsule(const CompositePart& part, const BodyFrame& f) {
+  return {f.position + f.to_world(part.pose.position), f.to_world(part.pose.orientation.rotate(part.capsule.half_axis))};
 }
 
 // Last step's list, moved aside while this step's is written (per thread, reused).
@@ -192,8 +221,9 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   thread_local CompositeShape scratch_i, scratch_j;
   const CompositeShape& si = shape_of(shapes_, p.shape[i], p.radius[i], scratch_i);
   const CompositeShape& sj = shape_of(shapes_, p.shape[j], p.radius[j], scratch_j);
-  const Pose body_i{p.position[i], p.orientation[i]}, body_j{p.position[j], p.orientation[j]};
-  if (body_boxes_apart(si, body_i, sj, body_j)) {
+  const BodyFrame frame_i = body_frame(p.position[i], p.orientation[i]);
+  const BodyFrame frame_j = body_frame(p.position[j], p.orientation[j]);
+  if (body_boxes_apart(si, frame_i, sj, frame_j)) {
     contacts.clear();
     if (profile) {
       CompositeStats& st = composite_stats_slot();
@@ -202,6 +232,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
     }
     return {};
   }
+  const Pose body_i{p.position[i], p.orientation[i]}, body_j{p.position[j], p.orientation[j]};
   const ContactParams& params = table_.pair(p.species[i], p.species[j]);
   const double reduced_mass = 1.0 / (p.inv_mass[i] + p.inv_mass[j]);
   const double reduced_radius = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
@@ -209,28 +240,46 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   const SubContactList& previous = previous_scratch(contacts);
   contacts.clear();
 
-  // Parts placed once per body pair; composites of up to 4 parts on the stack.
+  // Capsules of every part first; a part is placed (pose, box axes) only when one of its pairs
+  // survives the capsule cull. Composites of up to 4 parts on the stack.
   constexpr std::size_t kMaxParts = 4;
-  thread_local std::vector<PlacedPart> overflow_i, overflow_j;
-  PlacedPart stack_i[kMaxParts], stack_j[kMaxParts];
-  PlacedPart* placed_i = stack_i;
-  PlacedPart* placed_j = stack_j;
-  if (si.parts.size() > kMaxParts) overflow_i.resize(si.parts.size()), placed_i = overflow_i.data();
-  if (sj.parts.size() > kMaxParts) overflow_j.resize(sj.parts.size()), placed_j = overflow_j.data();
-  for (std::size_t a = 0; a < si.parts.size(); ++a) placed_i[a] = place(si.parts[a], body_i);
-  for (std::size_t b = 0; b < sj.parts.size(); ++b) placed_j[b] = place(sj.parts[b], body_j);
+  const std::size_t ni = si.parts.size(), nj = sj.parts.size();
+  thread_local std::vector<WorldCapsule> overflow_ci, overflow_cj;
+  thread_local std::vector<PlacedSlot> overflow_i, overflow_j;
+  thread_local std::vector<char> overflow_pi, overflow_pj;
+  WorldCapsule stack_ci[kMaxParts], stack_cj[kMaxParts];
+  PlacedSlot stack_i[kMaxParts], stack_j[kMaxParts];
+  char stack_pi[kMaxParts] = {}, stack_pj[kMaxParts] = {};
+  WorldCapsule* cap_i = stack_ci;
+  WorldCapsule* cap_j = stack_cj;
+  PlacedSlot* placed_i = stack_i;
+  PlacedSlot* placed_j = stack_j;
+  char* is_placed_i = stack_pi;
+  char* is_placed_j = stack_pj;
+  if (ni > kMaxParts) {
+    overflow_ci.resize(ni), overflow_i.resize(ni), overflow_pi.assign(ni, 0);
+    cap_i = overflow_ci.data(), placed_i = overflow_i.data(), is_placed_i = overflow_pi.data();
+  }
+  if (nj > kMaxParts) {
+    overflow_cj.resize(nj), overflow_j.resize(nj), overflow_pj.assign(nj, 0);
+    cap_j = overflow_cj.data(), placed_j = overflow_j.data(), is_placed_j = overflow_pj.data();
+  }
+  for (std::size_t a = 0; a < ni; ++a) cap_i[a] = world_capsule(si.parts[a], frame_i);
+  for (std::size_t b = 0; b < nj; ++b) cap_j[b] = world_capsule(sj.parts[b], frame_j);
 
   ContactResult total;
   std::uint64_t t0 = ticks(profile);
-  for (std::size_t a = 0; a < si.parts.size(); ++a) {
-    const PlacedPart& pa = placed_i[a];
-    for (std::size_t b = 0; b < sj.parts.size(); ++b) {
-      const PlacedPart& pb = placed_j[b];
+  for (std::size_t a = 0; a < ni; ++a) {
+    for (std::size_t b = 0; b < nj; ++b) {
       ++n_parts;
-      if (capsules_apart(pa.pose.position, pa.capsule_axis, pa.capsule_radius, pb.pose.position, pb.capsule_axis,
-                         pb.capsule_radius))
+      if (capsules_apart(cap_i[a].centre, cap_i[a].half_axis, si.parts[a].capsule.radius, cap_j[b].centre,
+                         cap_j[b].half_axis, sj.parts[b].capsule.radius))
         continue;
       ++n_narrow;
+      if (!is_placed_i[a]) new (&placed_i[a].part) PlacedPart(place(si.parts[a], body_i)), is_placed_i[a] = 1;
+      if (!is_placed_j[b]) new (&placed_j[b].part) PlacedPart(place(sj.parts[b], body_j)), is_placed_j[b] = 1;
+      const PlacedPart& pa = placed_i[a].part;
+      const PlacedPart& pb = placed_j[b].part;
       const std::uint64_t t1 = ticks(profile);
       t_cull += t1 - t0;
       const auto part_a = static_cast<std::uint16_t>(a), part_b = static_cast<std::uint16_t>(b);
