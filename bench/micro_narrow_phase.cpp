@@ -46,9 +46,12 @@ std::vector<PosedPair> make_pairs(bool polyhedra, bool deep, std::size_t n) {
   std::mt19937_64 rng(deep ? 21 : 22);
   std::uniform_real_distribution<double> u(0, 1);
   std::normal_distribution<double> g;
+  // A few shapes, many poses: building a polyhedron (three hulls) costs more than the queries.
+  std::vector<ConvexShape> shapes_a, shapes_b;
+  for (int k = 0; k < 8; ++k) shapes_a.push_back(random_shape(rng, polyhedra)), shapes_b.push_back(random_shape(rng, false));
   std::vector<PosedPair> out;
   while (out.size() < n) {
-    PosedPair p{random_shape(rng, polyhedra), random_shape(rng, false), {}, {}};
+    PosedPair p{shapes_a[out.size() % 8], shapes_b[(out.size() / 8) % 8], {}, {}};
     p.pa = {{0, 0, 0}, random_quat(rng)};
     const double reach = p.a.bounding_radius + p.b.bounding_radius;
     p.pb = {normalized_or_zero({g(rng), g(rng), g(rng)}) * (reach * (0.3 + 0.7 * u(rng))), random_quat(rng)};
