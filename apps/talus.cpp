@@ -1,13 +1,15 @@
-// The talus command line: run, check and params.
+// The talus command line: run, check, ensemble, sweep, render, plot and params.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "talus/contact/parameter_procedure.h"
 #include "talus/io/input_error.h"
+#include "talus/io/json_file.h"
 #include "talus/io/scenario_file.h"
 #include "talus/scenario/run_loop.h"
 #include "talus/scenario/scenario.h"
@@ -54,6 +56,35 @@ int run_tool(const std::string& script, std::vector<std::string> args) {
   return 1;
 }
 
+// Measures a finished run again from its files, with the scenario as run plus any overrides.
+int command_analyze(const std::filesystem::path& dir, const std::vector<std::string>& overrides) {
+  io::ScenarioFile file = open_scenario((dir / "scenario.toml").string(), overrides);
+  Scenario scenario = load_scenario(file);
+  nlohmann::json summary = io::read_json(dir / "summary.json");
+  bool any = false;
+  for (auto& o : scenario.observers) any = o->reanalyse(dir, summary) || any;
+  if (!any) throw std::runtime_error(dir.string() + ": nothing to analyse (no dam-break states in the folder)");
+  io::write_json(dir / "summary.json", summary);
+  std::printf("%s: summary.json updated\n", dir.string().c_str());
+  return 0;
+}
+
+// The executable itself, for the tools that start runs.
+std::string self_path() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("talus") : self.string();
+}
+
+// `talus plot DIR`: dam-break figures for a dam-break run, an ensemble or a sweep; the repose
+// figure for a hopper run or sweep; energies otherwise.
+std::string plot_tool(const std::filesystem::path& dir) {
+  if (std::filesystem::exists(dir / "sweep.json") || std::filesystem::exists(dir / "ensemble.json") ||
+      std::filesystem::exists(dir / "collapse_speeds.csv") || std::filesystem::exists(dir / "pile_profile.csv"))
+    return "dam_break_plots.py";
+  return "plot_timeseries.py";
+}
+
 int command_check(const std::string& path, const std::vector<std::string>& overrides) {
   io::ScenarioFile file = open_scenario(path, overrides);
   Scenario scenario = load_scenario(file);
@@ -86,13 +117,31 @@ int main(int argc, char** argv) {
 
   std::string view = "side", picture;
   double render_time = -1;
+  CLI::App* analyze = app.add_subcommand("analyze", "Measure a finished run again from its results folder");
+  analyze->add_option("dir", path, "Results folder")->required();
+  analyze->add_option("--set", overrides, "Override a scenario value, e.g. dam_break.pixel=1e-3");
   CLI::App* render = app.add_subcommand("render", "Draw a results folder's configuration as a PNG (needs run.vtk_interval)");
   render->add_option("dir", path, "Results folder")->required();
   render->add_option("--time", render_time, "Simulated time (s); default: the last frame");
   render->add_option("--view", view, "side (x-z) or top (x-y)")->check(CLI::IsMember({"side", "top"}));
   render->add_option("--out", picture, "PNG file (default: DIR/render_<view>_<time>.png)");
-  CLI::App* plot = app.add_subcommand("plot", "Plot a results folder's energies and speeds (DIR/energies.png)");
+  CLI::App* plot = app.add_subcommand("plot", "Plot a results folder: energies; dam-break, ensemble, sweep and hopper figures");
   plot->add_option("dir", path, "Results folder")->required();
+
+  int seeds = 1, jobs = 1, first_seed = 1;
+  std::vector<std::string> grid;
+  CLI::App* ensemble = app.add_subcommand("ensemble", "Run a scenario for N seeds and aggregate (DIR/ensemble.json)");
+  CLI::App* sweep = app.add_subcommand("sweep", "Run an ensemble per grid point (DIR/sweep.csv, flow map)");
+  for (CLI::App* sub : {ensemble, sweep}) {
+    sub->add_option("file", path, "Scenario file (TOML)")->required();
+    sub->add_option("--seeds", seeds, "Runs per case, seeds first-seed..first-seed+N-1")->check(CLI::PositiveNumber);
+    sub->add_option("--first-seed", first_seed, "First run.seed")->check(CLI::NonNegativeNumber);
+    sub->add_option("--jobs", jobs, "Runs at a time, one thread each")->check(CLI::PositiveNumber);
+    sub->add_option("--out", out, "Results folder")->required();
+    sub->add_option("--set", overrides, "Override a scenario value for every run: --set key=value (repeatable)");
+  }
+  ensemble->get_option("--seeds")->required();
+  sweep->add_option("--grid", grid, "key=v1,v2,... (repeatable: the grid is their product)")->required();
 
   CLI::App* params = app.add_subcommand("params", "Contact parameters from material targets");
   params->require_subcommand(1);
@@ -121,7 +170,23 @@ int main(int argc, char** argv) {
   try {
     if (*run) return command_run(path, overrides, out, overwrite, quiet, threads);
     if (*check) return command_check(path, overrides);
-    if (*plot) return run_tool("plot_timeseries.py", {path});
+    if (*analyze) return command_analyze(path, overrides);
+    if (*plot) return run_tool(plot_tool(path), {path});
+    if (*ensemble || *sweep) {
+      // Bad input stops here, with its file and line, rather than in every run's log.
+      std::vector<std::string> first = overrides;
+      for (const auto& g : grid) first.push_back(g.substr(0, g.find(',')));
+      io::ScenarioFile file = open_scenario(path, first);
+      load_scenario(file);
+      std::vector<std::string> args;
+      if (*ensemble) args = {"run", path, "--seeds", std::to_string(seeds)};
+      else args = {path, "--seeds", std::to_string(seeds)};
+      args.insert(args.end(), {"--first-seed", std::to_string(first_seed), "--jobs", std::to_string(jobs), "--out", out,
+                               "--talus", self_path()});
+      for (const auto& g : grid) args.insert(args.end(), {"--grid", g});
+      for (const auto& o : overrides) args.insert(args.end(), {"--set", o});
+      return run_tool(*ensemble ? "dam_break_ensemble.py" : "dam_break_sweep.py", args);
+    }
     if (*render) {
       std::vector<std::string> args = {path, "--view", view};
       if (render_time >= 0) args.insert(args.end(), {"--time", std::to_string(render_time)});

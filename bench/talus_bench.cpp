@@ -60,7 +60,7 @@ struct Options {
   std::string only;                ///< empty: every case
   std::uint64_t steps4k = 2000, steps32k = 500, warmup = 200;
   int reps = 3;
-  double flow_time = 0;            ///< sqrt(d/g), age of the cached flowing state; 0: 10 (1 with --quick)
+  double flow_time = 0;            ///< sqrt(d/g), age of the cached flowing state; 0: 30 (1 with --quick)
   int gen_threads = 0;             ///< threads for cache generation; 0: omp_get_max_threads()
   std::string probe;               ///< internal: run the memory probe of this case and exit
   std::size_t crosses = 2000;      ///< crosses in the cross pile (--only crosspile)
@@ -100,7 +100,7 @@ Options parse(int argc, char** argv) {
   if (!o.only.empty() && o.only != "chute4k" && o.only != "chute32k" && o.only != "crosspile")
     throw std::invalid_argument("--only takes chute4k, chute32k or crosspile");
   if (o.reps < 1) throw std::invalid_argument("--reps must be at least 1");
-  if (o.flow_time <= 0) o.flow_time = o.quick ? 1 : 10;
+  if (o.flow_time <= 0) o.flow_time = o.quick ? 1 : 30;
   if (o.gen_threads <= 0) o.gen_threads = omp_get_max_threads();
   if (o.quick) {
     if (!steps4k_set) o.steps4k = 200;

@@ -1,13 +1,26 @@
 #include "talus/body/particles.h"
 
+#include <memory>
+
+#include "talus/world/parallel.h"
+
 namespace talus {
 
 namespace {
+// Gathers into `scratch`, then copies back: the arrays keep their memory (and capacity for the
+// ghosts), and one scratch buffer serves every array instead of a fresh array each, whose
+// pages the system would have to map and zero at every rebuild.
 template <class T>
-void permute(std::vector<T>& values, const std::vector<std::uint32_t>& order) {
-  std::vector<T> out(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) out[k] = values[order[k]];
-  values.swap(out);
+void permute(std::vector<T>& values, const std::vector<std::uint32_t>& order, unsigned char* scratch) {
+  T* out = reinterpret_cast<T*>(scratch);
+  const long n = static_cast<long>(order.size());
+#pragma omp parallel if (worth_parallel(order.size()))
+  {
+#pragma omp for schedule(static)
+    for (long k = 0; k < n; ++k) out[k] = values[order[k]];
+#pragma omp for schedule(static)
+    for (long k = 0; k < n; ++k) values[k] = out[k];
+  }
 }
 }  // namespace
 
@@ -45,19 +58,22 @@ void ParticleStore::reserve(std::size_t n) {
 
 void ParticleStore::permute_owned(const std::vector<std::uint32_t>& order) {
   resize(owned);
-  permute(position, order);
-  permute(velocity, order);
-  permute(angular_velocity, order);
-  permute(force, order);
-  permute(torque, order);
-  permute(orientation, order);
-  permute(radius, order);
-  permute(inv_mass, order);
-  permute(inv_inertia, order);
-  permute(mass, order);
-  permute(species, order);
-  permute(shape, order);
-  permute(gid, order);
+  static_assert(sizeof(Quat) >= sizeof(Vec3), "the scratch holds the largest element");
+  const std::unique_ptr<unsigned char[]> scratch(new unsigned char[order.size() * sizeof(Quat)]);
+  unsigned char* b = scratch.get();
+  permute(position, order, b);
+  permute(velocity, order, b);
+  permute(angular_velocity, order, b);
+  permute(force, order, b);
+  permute(torque, order, b);
+  permute(orientation, order, b);
+  permute(radius, order, b);
+  permute(inv_mass, order, b);
+  permute(inv_inertia, order, b);
+  permute(mass, order, b);
+  permute(species, order, b);
+  permute(shape, order, b);
+  permute(gid, order, b);
 }
 
 void ParticleStore::push_ghost(std::size_t owner, const Vec3& shift) {

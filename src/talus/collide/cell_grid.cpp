@@ -68,7 +68,7 @@ void CellGrid::bin(const std::vector<CellCoord>& cell_of) {
   for (const auto& c : cell_of) ++start_[linear(c) + 1];
   for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
   items_.resize(cell_of.size());
-  std::vector<std::int64_t> fill(start_.begin(), start_.end() - 1);
+  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
   for (std::size_t i = 0; i < cell_of.size(); ++i) items_[fill[linear(cell_of[i])]++] = static_cast<std::uint32_t>(i);
 }
 

@@ -39,7 +39,7 @@ class CellGrid {
   int count_[3] = {1, 1, 1};
   int first_[3] = {0, 0, 0}, last_[3] = {0, 0, 0};  ///< extended index range (ghost layers included)
   int slab_axis_ = 0;
-  std::vector<std::int64_t> start_;
+  std::vector<std::uint32_t> start_;  ///< first item of each cell (32 bits: half the memory)
   std::vector<std::uint32_t> items_;
 };
 

@@ -38,6 +38,11 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
                      double skin, const MemoryLayout& layout) {
   const std::size_t owned = p.owned;
   const int s_axis = grid.slab_axis();
+  // Room for about as many entries per row as the last build had, so that blocks seldom grow
+  // by doubling (a transient the peak memory would see). The old entries go first: whatever
+  // must survive has been carried out of the list.
+  const double per_row = entries_per_row_;
+  release();
   row_.assign(owned + 1, 0);
 
   // Slab ranges: owned particles arrive sorted by slab.
@@ -56,7 +61,7 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
     const int nt = omp_get_num_threads();
     const std::size_t lo = owned * t / nt, hi = owned * (t + 1) / nt;
     auto& out = block_neighbors[t];
-    out.clear();
+    out.reserve(static_cast<std::size_t>(1.05 * per_row * static_cast<double>(hi - lo)) + 16);
     for (std::size_t i = lo; i < hi; ++i) {
       const CellCoord ci = cell_of[i];
       const Vec3 xi = p.position[i];
@@ -83,16 +88,44 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
       row_[i + 1] = static_cast<std::uint32_t>(out.size());
     }
   }
-  // Turn per-block counts into global row offsets.
+  // Turn per-block counts into global row offsets; the joined list has its exact size.
+  std::size_t total = 0;
+  for (const auto& b : block_neighbors) total += b.size();
+  neighbor_.reserve(total);
   std::size_t offset = 0;
-  neighbor_.clear();
   for (int t = 0; t < threads; ++t) {
     const std::size_t lo = owned * t / threads, hi = owned * (t + 1) / threads;
     for (std::size_t i = lo; i < hi; ++i) row_[i + 1] += static_cast<std::uint32_t>(offset);
     offset += block_neighbors[t].size();
     neighbor_.insert(neighbor_.end(), block_neighbors[t].begin(), block_neighbors[t].end());
+    std::vector<std::uint32_t>().swap(block_neighbors[t]);
   }
   memory.resize(neighbor_.size(), layout);
+  entries_per_row_ = owned ? static_cast<double>(neighbor_.size()) / static_cast<double>(owned) : 0.0;
+  split_slabs();
+}
+
+void PairList::release() {
+  std::vector<std::uint32_t>().swap(neighbor_);
+  memory = ContactMemory{};
+}
+
+void PairList::split_slabs() {
+  // Eight chunks: four per colour keep two or four threads busy, and a chunk of several slabs
+  // balances far better than single slabs (a 40 d chute has 34 slabs: 17 per colour would
+  // leave one of two threads with a slab more).
+  constexpr std::size_t kChunks = 8;
+  const std::size_t slab_count = slabs();
+  const std::size_t count = std::min(kChunks, slab_count);
+  auto work = [&](std::size_t s) -> double { return static_cast<double>(row_[slab_start_[s]]) + slab_start_[s]; };
+  const double total = slab_count ? work(slab_count) : 0.0;
+  chunk_.assign(1, 0);
+  for (std::size_t c = 1; c < count; ++c) {
+    std::size_t s = chunk_.back() + 1;  // at least one slab per chunk
+    while (s < slab_count - (count - c) && work(s) < total * static_cast<double>(c) / static_cast<double>(count)) ++s;
+    chunk_.push_back(static_cast<std::uint32_t>(s));
+  }
+  chunk_.push_back(static_cast<std::uint32_t>(slab_count));
 }
 
 std::vector<std::int32_t> rows_by_global_id(std::size_t rows, const std::vector<std::uint32_t>& gid,
@@ -102,33 +135,69 @@ std::vector<std::int32_t> rows_by_global_id(std::size_t rows, const std::vector<
   return row_of;
 }
 
+CarriedContacts PairList::carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
+                                bool every_entry) const {
+  CarriedContacts c;
+  const auto keep = [&](std::uint32_t e) { return every_entry || memory.active(e); };
+  // Counting sort of the kept entries by the global id of their row.
+  c.start.assign(gid_limit + 1, 0);
+  for (std::size_t i = 0; i < rows(); ++i)
+    for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) c.start[gid[i] + 1] += keep(e);
+  for (std::size_t a = 0; a < gid_limit; ++a) c.start[a + 1] += c.start[a];
+  const std::size_t kept = c.start[gid_limit];
+  c.other.resize(kept);
+  c.entry.resize(kept);
+  MemoryLayout layout;
+  layout.spring = !memory.spring.empty();
+  layout.normal_prev = !memory.normal_prev.empty();
+  layout.rolling = !memory.rolling.empty();
+  c.memory.resize(kept, layout);
+  for (std::size_t i = 0; i < rows(); ++i) {
+    std::uint32_t k = c.start[gid[i]];
+    for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) {
+      if (!keep(e)) continue;
+      c.other[k] = gid[neighbor_[e]];
+      c.entry[k] = e;
+      c.memory.copy_from(memory, e, k, false);
+      ++k;
+    }
+  }
+  return c;
+}
+
+std::int64_t CarriedContacts::find(std::uint32_t a, std::uint32_t b) const {
+  if (a + 1 >= start.size()) return -1;
+  for (std::uint32_t k = start[a]; k < start[a + 1]; ++k)
+    if (other[k] == b) return k;
+  return -1;
+}
+
+void PairList::restore_memory(const CarriedContacts& carried, const std::vector<std::uint32_t>& gid,
+                              std::vector<std::int64_t>* origin) {
+  if (origin) origin->assign(entries(), 0);
+  if (carried.other.empty()) return;
+  const long n = static_cast<long>(rows());
+#pragma omp parallel for schedule(static) if (worth_parallel(rows()))
+  for (long i = 0; i < n; ++i) {
+    for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) {
+      const std::uint32_t a = gid[i], b = gid[neighbor_[e]];
+      std::int64_t k = carried.find(a, b);
+      bool reversed = false;
+      if (k < 0) {
+        k = carried.find(b, a);
+        reversed = true;
+      }
+      if (k < 0) continue;
+      memory.copy_from(carried.memory, k, e, reversed);
+      if (origin) (*origin)[e] = reversed ? -(carried.entry[k] + std::int64_t{1}) : carried.entry[k] + std::int64_t{1};
+    }
+  }
+}
+
 void PairList::transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
                                const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
                                std::vector<std::int64_t>* origin) {
-  if (origin) origin->assign(entries(), 0);
-  if (old.entries() == 0) return;
-  const std::vector<std::int32_t> old_row_of = rows_by_global_id(old.rows(), old_gid, gid_limit);
-  auto find = [&](std::uint32_t a, std::uint32_t b) -> std::int64_t {
-    const std::int32_t r = old_row_of[a];
-    if (r < 0) return -1;
-    for (std::uint32_t e = old.row_begin(r); e < old.row_end(r); ++e)
-      if (old_gid[old.neighbor(e)] == b) return e;
-    return -1;
-  };
-#pragma omp parallel for schedule(static) if (worth_parallel(rows()))
-  for (std::size_t i = 0; i < rows(); ++i) {
-    for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) {
-      const std::uint32_t a = gid[i], b = gid[neighbor_[e]];
-      std::int64_t f = find(a, b);
-      bool reversed = false;
-      if (f < 0) {
-        f = find(b, a);
-        reversed = true;
-      }
-      if (f >= 0 && old.memory.active(f)) memory.copy_from(old.memory, f, e, reversed);
-      if (f >= 0 && origin) (*origin)[e] = reversed ? -(f + 1) : f + 1;
-    }
-  }
+  restore_memory(old.carry(old_gid, gid_limit, origin != nullptr), gid, origin);
 }
 
 std::size_t PairList::bytes() const {

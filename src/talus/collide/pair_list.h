@@ -38,6 +38,16 @@ struct ContactMemory {
 std::vector<std::int32_t> rows_by_global_id(std::size_t rows, const std::vector<std::uint32_t>& gid,
                                             std::size_t gid_limit);
 
+// The memories of a list's entries keyed by the global ids of their pair, compact (only the
+// entries kept), so that a list can be rebuilt after its old form has been freed.
+struct CarriedContacts {
+  std::vector<std::uint32_t> start;  ///< per global id a: first record of the pairs (a, b) listed in a's row
+  std::vector<std::uint32_t> other;  ///< global id b of each record
+  std::vector<std::uint32_t> entry;  ///< the record's entry in the list it came from
+  ContactMemory memory;              ///< the record's memory, as seen from a
+  std::int64_t find(std::uint32_t a, std::uint32_t b) const;  ///< record of the pair (a, b), or -1
+};
+
 class PairList {
  public:
   // Builds the list over owned particles (sorted by slab) and ghosts; pairs whose bounding
@@ -50,6 +60,16 @@ class PairList {
   void transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
                        const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
                        std::vector<std::int64_t>* origin = nullptr);
+  // The same in two halves, so that the old list can be freed before the new one is built:
+  // `carry` keeps the entries that remember a contact (every entry if `every_entry`), keyed by
+  // the global ids `gid` of this list's particles; `restore_memory` hands them to this list
+  // built anew (`origin` as for transfer_memory).
+  CarriedContacts carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit, bool every_entry) const;
+  // Frees the entries and their memory until the next build (which still sizes its buffers
+  // from their number).
+  void release();
+  void restore_memory(const CarriedContacts& carried, const std::vector<std::uint32_t>& gid,
+                      std::vector<std::int64_t>* origin = nullptr);
 
   std::size_t rows() const { return row_.empty() ? 0 : row_.size() - 1; }
   std::uint32_t row_begin(std::size_t i) const { return row_[i]; }
@@ -59,14 +79,23 @@ class PairList {
   std::size_t slabs() const { return slab_start_.empty() ? 0 : slab_start_.size() - 1; }
   std::uint32_t slab_begin(std::size_t s) const { return slab_start_[s]; }
   std::uint32_t slab_end(std::size_t s) const { return slab_start_[s + 1]; }
+  // Runs of consecutive slabs of about equal work (entries and rows), as slab indices
+  // [chunk[c], chunk[c + 1]): the units of the parallel force pass. They depend on the list
+  // only, never on the number of threads.
+  const std::vector<std::uint32_t>& slab_chunks() const { return chunk_; }
+  const std::uint32_t* neighbors() const { return neighbor_.data(); }
   std::size_t bytes() const;
 
   ContactMemory memory;
 
  private:
+  void split_slabs();
+
   std::vector<std::uint32_t> row_;
   std::vector<std::uint32_t> neighbor_;
   std::vector<std::uint32_t> slab_start_;  ///< first owned particle of each slab
+  std::vector<std::uint32_t> chunk_;       ///< first slab of each chunk, then the slab count
+  double entries_per_row_ = 0;             ///< of the last build
 };
 
 }  // namespace talus

@@ -9,6 +9,50 @@ namespace talus {
 namespace {
 // Equal principal moments: omega and L are parallel and the free flow is a steady rotation.
 inline bool isotropic(const Vec3& inv_i) { return inv_i.x == inv_i.y && inv_i.y == inv_i.z; }
+
+// Rotation of a rigid body over dt: shaped isotropic bodies turn about omega, anisotropic ones
+// follow the free rigid-body flow (which also turns omega). Kept out of line: spheres never
+// come here, and the hot loops stay small.
+[[gnu::noinline]] void turn_body(ParticleStore& p, std::size_t i, double dt) {
+  const Vec3 inv_i = p.inv_inertia[i];
+  Quat& q = p.orientation[i];
+  if (isotropic(inv_i)) {
+    // Free rotation of an isotropic body is a steady turn about omega.
+    const Vec3 w = p.angular_velocity[i];
+    const double angle = norm(w) * dt;
+    if (angle > 0) q = (Quat::from_axis_angle(w, angle) * q).normalized();
+  } else {
+    Vec3 l = body_momentum(q, inv_i, p.angular_velocity[i]);
+    free_rotation(q, l, inv_i, dt);
+    p.angular_velocity[i] = world_angular_velocity(q, inv_i, l);
+  }
+}
+
+// L += h tau at fixed orientation for an anisotropic body; the gyroscopic term is in the drift's free flow.
+[[gnu::noinline]] void kick_anisotropic(ParticleStore& p, std::size_t i, double h) {
+  const Quat& q = p.orientation[i];
+  p.angular_velocity[i] += h * q.rotate(hadamard(p.inv_inertia[i], q.rotate_inverse(p.torque[i])));
+}
+
+// One mobile particle's half kick: v += h (F/m + g), omega += h I^-1 tau.
+[[gnu::always_inline]] inline void kick_one(ParticleStore& p, std::size_t i, double inv_m, double h,
+                                            const Vec3& gravity) {
+  p.velocity[i] += h * (inv_m * p.force[i] + gravity);
+  const Vec3 inv_i = p.inv_inertia[i];
+  if (isotropic(inv_i)) {
+    p.angular_velocity[i] += (h * inv_i.x) * p.torque[i];
+  } else {
+    kick_anisotropic(p, i, h);
+  }
+}
+
+// One mobile particle's drift; returns its squared distance from its position at the last build.
+[[gnu::always_inline]] inline double drift_one(ParticleStore& p, std::size_t i, double dt, const Vec3& at_build) {
+  p.position[i] += dt * p.velocity[i];
+  // A sphere's orientation plays no part in its dynamics: only shaped bodies track it.
+  if (p.shape[i] != 0 || !isotropic(p.inv_inertia[i])) turn_body(p, i, dt);
+  return norm2(p.position[i] - at_build);
+}
 }  // namespace
 
 void kick(ParticleStore& p, double h, const Vec3& gravity) {
@@ -17,15 +61,7 @@ void kick(ParticleStore& p, double h, const Vec3& gravity) {
   for (std::size_t i = 0; i < n; ++i) {
     const double inv_m = p.inv_mass[i];
     if (inv_m == 0.0) continue;  // fixed particles: infinite mass, unaffected by gravity
-    p.velocity[i] += h * (inv_m * p.force[i] + gravity);
-    const Vec3 inv_i = p.inv_inertia[i];
-    if (isotropic(inv_i)) {
-      p.angular_velocity[i] += (h * inv_i.x) * p.torque[i];
-    } else {
-      // L += h tau at fixed orientation; the gyroscopic term is in the drift's free flow.
-      const Quat& q = p.orientation[i];
-      p.angular_velocity[i] += h * q.rotate(hadamard(inv_i, q.rotate_inverse(p.torque[i])));
-    }
+    kick_one(p, i, inv_m, h, gravity);
   }
 }
 
@@ -35,23 +71,23 @@ double drift(ParticleStore& p, double dt, const std::vector<Vec3>& at_build) {
 #pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel(n))
   for (std::size_t i = 0; i < n; ++i) {
     if (p.inv_mass[i] == 0.0) continue;
-    p.position[i] += dt * p.velocity[i];
-    const Vec3 w = p.angular_velocity[i];
-    const Vec3 inv_i = p.inv_inertia[i];
-    Quat& q = p.orientation[i];
-    if (isotropic(inv_i)) {
-      // A sphere's orientation plays no part in its dynamics: only shaped bodies track it.
-      // Free rotation of an isotropic body is a steady turn about omega.
-      if (p.shape[i] != 0) {
-        const double angle = norm(w) * dt;
-        if (angle > 0) q = (Quat::from_axis_angle(w, angle) * q).normalized();
-      }
-    } else {
-      Vec3 l = body_momentum(q, inv_i, w);
-      free_rotation(q, l, inv_i, dt);
-      p.angular_velocity[i] = world_angular_velocity(q, inv_i, l);
+    max_d2 = std::max(max_d2, drift_one(p, i, dt, at_build[i]));
+  }
+  return max_d2;
+}
+
+double kick_drift(ParticleStore& p, double h, double dt, const Vec3& gravity, const std::vector<Vec3>& at_build) {
+  const std::size_t n = p.owned;
+  double max_d2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel(n))
+  for (std::size_t i = 0; i < n; ++i) {
+    const double inv_m = p.inv_mass[i];
+    if (inv_m != 0.0) {
+      kick_one(p, i, inv_m, h, gravity);
+      max_d2 = std::max(max_d2, drift_one(p, i, dt, at_build[i]));
     }
-    max_d2 = std::max(max_d2, norm2(p.position[i] - at_build[i]));
+    p.force[i] = {};
+    p.torque[i] = {};
   }
   return max_d2;
 }

@@ -17,4 +17,10 @@ void kick(ParticleStore& particles, double h, const Vec3& gravity);
 // owned particle from its position at the last neighbour-list build.
 double drift(ParticleStore& particles, double dt, const std::vector<Vec3>& position_at_build);
 
+// kick(h) then drift(dt) in one pass over the particles (the same arithmetic, one sweep of
+// memory instead of two), and force and torque of every owned particle reset to zero for the
+// next force pass. Returns what drift returns.
+double kick_drift(ParticleStore& particles, double h, double dt, const Vec3& gravity,
+                  const std::vector<Vec3>& position_at_build);
+
 }  // namespace talus

@@ -1,5 +1,8 @@
 #include "talus/io/json_file.h"
 
+#include <fstream>
+#include <stdexcept>
+
 #include "talus/io/atomic_file.h"
 
 namespace talus::io {
@@ -8,6 +11,16 @@ void write_json(const std::filesystem::path& path, const nlohmann::json& value, 
   std::string text = value.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
   text += '\n';
   atomic_write(path, text);
+}
+
+nlohmann::json read_json(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(path.string() + ": not valid JSON (" + e.what() + ")");
+  }
 }
 
 }  // namespace talus::io

@@ -10,5 +10,7 @@ namespace talus::io {
 // NaN and infinities have no JSON form and become null. Invalid UTF-8 in strings is
 // replaced by U+FFFD rather than failing at the end of a long run.
 void write_json(const std::filesystem::path& path, const nlohmann::json& value, int indent = 2);
+// Throws std::runtime_error naming the file when it cannot be read or is not JSON.
+nlohmann::json read_json(const std::filesystem::path& path);
 
 }  // namespace talus::io

@@ -1,95 +1,116 @@
 #include "talus/scenario/body_insertion.h"
 
-#include <array>
+#include <algorithm>
 #include <cmath>
-#include <unordered_map>
-#include <variant>
+#include <stdexcept>
+#include <string>
 
-#include "talus/collide/box_box.h"
 #include "talus/collide/convex_contact.h"
 
 namespace talus {
 
-bool bodies_overlap(const CompositeShape& shape, const PlacedBody& a, const PlacedBody& b, double clearance) {
-  const Pose body_a{a.position, a.orientation}, body_b{b.position, b.orientation};
-  const Vec3 grow{0.5 * clearance, 0.5 * clearance, 0.5 * clearance};
-  for (const CompositePart& pa : shape.parts) {
-    const Pose posed_a = body_a * pa.pose;
-    for (const CompositePart& pb : shape.parts) {
-      const Pose posed_b = body_b * pb.pose;
-      const Vec3 ua = posed_a.orientation.rotate(pa.capsule.half_axis), ub = posed_b.orientation.rotate(pb.capsule.half_axis);
-      if (capsules_apart(posed_a.position, ua, pa.capsule.radius + 0.5 * clearance, posed_b.position, ub,
-                         pb.capsule.radius + 0.5 * clearance))
-        continue;
-      const Box* ba = std::get_if<Box>(&pa.shape.geometry);
-      const Box* bb = std::get_if<Box>(&pb.shape.geometry);
-      if (ba && bb) {
-        if (!box_box_sat(ba->half_extents + grow, posed_a, bb->half_extents + grow, posed_b).separated) return true;
-        continue;
-      }
-      const PartContact c = narrow_phase(pa.shape, posed_a, pb.shape, posed_b);
-      if (c.delta_n > -clearance) return true;
-    }
-  }
-  return false;
-}
-
 namespace {
 
-// Uniform random rotation (Shoemake 1992: a normalised 4D Gaussian).
-Quat random_orientation(std::mt19937_64& rng) {
+Quat uniform_orientation(std::mt19937_64& rng) {
+  // A normalised 4D Gaussian is uniform on SO(3).
   std::normal_distribution<double> g(0, 1);
   return Quat{g(rng), g(rng), g(rng), g(rng)}.normalized();
 }
 
-bool inside(const CompositeShape& shape, const PlacedBody& body, const Vec3& lo, const Vec3& hi) {
-  const Pose pose{body.position, body.orientation};
-  for (const CompositePart& part : shape.parts) {
-    const Aabb box = aabb(part.shape.geometry, pose * part.pose);
-    for (int k = 0; k < 3; ++k)
-      if (box.lo[k] < lo[k] || (k < 2 && box.hi[k] > hi[k])) return false;
+// The parts of a body in the world; a sphere is one part.
+std::vector<std::pair<ConvexShape, Pose>> world_parts(const PlacedBody& b) {
+  std::vector<std::pair<ConvexShape, Pose>> parts;
+  const Pose body{b.position, b.orientation};
+  if (!b.shape) {
+    parts.emplace_back(make_sphere(b.radius), body);
+    return parts;
   }
-  return true;
+  for (const CompositePart& p : b.shape->parts) parts.emplace_back(p.shape, body * p.pose);
+  return parts;
 }
 
 }  // namespace
 
-std::vector<PlacedBody> insert_bodies(const CompositeShape& shape, std::size_t count, const Vec3& lo, const Vec3& hi,
-                                      double growth, std::mt19937_64& rng, double clearance) {
+bool bodies_overlap(const PlacedBody& a, const PlacedBody& b, double clearance) {
+  const double reach = a.radius + b.radius + clearance;
+  if (norm2(a.position - b.position) >= reach * reach) return false;
+  if (!a.shape && !b.shape) return true;
+  for (const auto& [sa, pa] : world_parts(a))
+    for (const auto& [sb, pb] : world_parts(b))
+      // Sharp boxes go through separating axes, which answer at the first separating one;
+      // their rounded contact shapes lie inside the sharp ones, so no overlap is missed.
+      if (narrow_phase(sa, pa, sb, pb, nullptr, NarrowPhaseOptions{true}).delta_n > -clearance) return true;
+  return false;
+}
+
+Aabb body_aabb(const PlacedBody& body) {
+  Aabb box{body.position, body.position};
+  bool first = true;
+  for (const auto& [s, pose] : world_parts(body)) {
+    const Aabb b = aabb(s, pose);
+    for (int a = 0; a < 3; ++a) {
+      box.lo[a] = first ? b.lo[a] : std::min(box.lo[a], b.lo[a]);
+      box.hi[a] = first ? b.hi[a] : std::max(box.hi[a], b.hi[a]);
+    }
+    first = false;
+  }
+  return box;
+}
+
+BodyOverlapIndex::BodyOverlapIndex(double max_radius) : cell_(2.1 * max_radius) {  // room for a clearance of 0.1 radius
+  if (!(max_radius > 0)) throw std::invalid_argument("BodyOverlapIndex: radius must be positive");
+}
+
+std::int64_t BodyOverlapIndex::key(const Vec3& x) const {
+  const auto c = [&](double v) { return static_cast<std::int64_t>(std::floor(v / cell_)) & 0x1fffff; };
+  return (c(x.x) << 42) | (c(x.y) << 21) | c(x.z);
+}
+
+bool BodyOverlapIndex::overlaps(const PlacedBody& body, double clearance) const {
+  if (2 * body.radius + clearance > cell_) throw std::invalid_argument("BodyOverlapIndex: body larger than a cell");
+  for (int dx = -1; dx <= 1; ++dx)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dz = -1; dz <= 1; ++dz) {
+        const auto it = cells_.find(key(body.position + Vec3{dx * cell_, dy * cell_, dz * cell_}));
+        if (it == cells_.end()) continue;
+        for (std::uint32_t k : it->second)
+          if (bodies_overlap(body, bodies_[k], clearance)) return true;
+      }
+  return false;
+}
+
+void BodyOverlapIndex::insert(const PlacedBody& body) {
+  cells_[key(body.position)].push_back(static_cast<std::uint32_t>(bodies_.size()));
+  bodies_.push_back(body);
+}
+
+std::vector<PlacedBody> insert_bodies_growing(BodyOverlapIndex& index, const PlacedBody& prototype, std::size_t count,
+                                              const Vec3& lo, const Vec3& size, double growth, double clearance,
+                                              std::mt19937_64& rng, double max_top) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double cell = 2 * shape.bounding_radius + clearance;  // bodies farther apart cannot touch
-  auto cell_of = [&](const Vec3& x) {
-    const long i = static_cast<long>(std::floor((x.x - lo.x) / cell));
-    const long j = static_cast<long>(std::floor((x.y - lo.y) / cell));
-    const long k = static_cast<long>(std::floor((x.z - lo.z) / cell));
-    return std::array<long, 3>{i, j, k};
-  };
-  auto key = [](long i, long j, long k) { return (i * 4096 + j) * 1048576 + k; };
-  std::unordered_map<long, std::vector<std::uint32_t>> cells;
   std::vector<PlacedBody> placed;
-  placed.reserve(count);
-  double top = hi.z;
+  double top = size.z;
+  std::size_t misfits = 0;
   while (placed.size() < count) {
-    const PlacedBody b{{lo.x + (hi.x - lo.x) * unit(rng), lo.y + (hi.y - lo.y) * unit(rng), lo.z + (top - lo.z) * unit(rng)},
-                       random_orientation(rng)};
-    bool ok = inside(shape, b, lo, hi);
-    const auto c = cell_of(b.position);
-    for (long di = -1; di <= 1 && ok; ++di)
-      for (long dj = -1; dj <= 1 && ok; ++dj)
-        for (long dk = -1; dk <= 1 && ok; ++dk) {
-          const auto it = cells.find(key(c[0] + di, c[1] + dj, c[2] + dk));
-          if (it == cells.end()) continue;
-          for (std::uint32_t other : it->second)
-            if (norm2(placed[other].position - b.position) < cell * cell && bodies_overlap(shape, b, placed[other], clearance)) {
-              ok = false;
-              break;
-            }
-        }
-    if (!ok) {
-      top += growth;
+    PlacedBody b = prototype;
+    b.orientation = prototype.shape ? uniform_orientation(rng) : Quat{};
+    b.position = {lo.x + size.x * unit(rng), lo.y + size.y * unit(rng), lo.z + top * unit(rng)};
+    const Aabb box = body_aabb(b);
+    const bool fits = box.lo.x >= lo.x && box.hi.x <= lo.x + size.x && box.lo.y >= lo.y &&
+                      box.hi.y <= lo.y + size.y && box.lo.z >= lo.z && box.hi.z <= lo.z + top;
+    if (!fits) {
+      // Orientations too wide for a narrow region are redrawn; only overlaps grow the region.
+      if (++misfits > 1000000) throw std::runtime_error("insertion region too small for the body's shape");
       continue;
     }
-    cells[key(c[0], c[1], c[2])].push_back(static_cast<std::uint32_t>(placed.size()));
+    if (index.overlaps(b, clearance)) {
+      top += growth;
+      if (top > max_top)
+        throw std::runtime_error("insertion region full after " + std::to_string(placed.size()) + " of " +
+                                 std::to_string(count) + " particles");
+      continue;
+    }
+    index.insert(b);
     placed.push_back(b);
   }
   return placed;

@@ -1,17 +1,11 @@
 #pragma once
-// Dense random placement of rigid bodies (copies of one composite shape) with exact overlap
-// tests between their convex parts, rather than between bounding spheres: the long thin
-// crosses of Huet et al. 2021 fill about 0.7 % of their bounding sphere, so sphere-based
-// insertion leaves a cloud ten times taller than the pile it settles into, and a tall cloud
-// costs a long fall to simulate.
-//
-//   insert_bodies(shape, count, lo, hi, growth, rng, clearance)
-// Each attempt draws a centre uniformly in [lo, (hi.x, hi.y, top)] and a uniform random
-// orientation; it is kept when the body's parts stay inside [lo, hi] (sides and floor) and
-// no part comes within `clearance` of a part of a body already placed. Every rejected attempt
-// raises `top` (starting at hi.z) by `growth`.
-#include <cstddef>
+// Random non-overlapping placement of rigid bodies by their true shape. Placing crosses by
+// their bounding spheres would fill a column at a few per cent solid fraction and make the
+// pour take seconds of simulated fall; testing the convex parts themselves packs the initial
+// cloud several times denser, so the pile settles from a low height.
+#include <cstdint>
 #include <random>
+#include <unordered_map>
 #include <vector>
 
 #include "talus/shape/composite_shape.h"
@@ -19,16 +13,40 @@
 namespace talus {
 
 struct PlacedBody {
-  Vec3 position;    ///< body origin (m)
-  Quat orientation;
+  Vec3 position;                         ///< m, centre of mass
+  Quat orientation;                      ///< body to world
+  const CompositeShape* shape = nullptr; ///< parts in the body frame; nullptr: a sphere
+  double radius = 0;                     ///< m, bounding radius (the radius of a sphere)
 };
 
-std::vector<PlacedBody> insert_bodies(const CompositeShape& shape, std::size_t count, const Vec3& lo, const Vec3& hi,
-                                      double growth, std::mt19937_64& rng, double clearance = 0);
+// Whether two bodies come closer than `clearance` (m), part by part.
+bool bodies_overlap(const PlacedBody& a, const PlacedBody& b, double clearance);
 
-// True when two placed copies of the shape overlap (parts closer than `clearance`): boxes by
-// the separating axis test on the sharp boxes grown by clearance / 2, other parts by the
-// narrow phase.
-bool bodies_overlap(const CompositeShape& shape, const PlacedBody& a, const PlacedBody& b, double clearance = 0);
+// World box of a body's contact shape.
+Aabb body_aabb(const PlacedBody& body);
+
+// Overlap queries against a growing set of bodies, on a hash grid of cells of twice the
+// largest bounding radius.
+class BodyOverlapIndex {
+ public:
+  explicit BodyOverlapIndex(double max_radius);
+  bool overlaps(const PlacedBody& body, double clearance = 0) const;
+  void insert(const PlacedBody& body);
+  const std::vector<PlacedBody>& bodies() const { return bodies_; }
+
+ private:
+  std::int64_t key(const Vec3& x) const;
+  double cell_;
+  std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells_;
+  std::vector<PlacedBody> bodies_;
+};
+
+// Weinhart et al. 2012, Sect. 5, for bodies of any shape: copies of `prototype` at uniform
+// random positions and orientations whose whole shape lies in [lo, lo + (size.x, size.y, I)],
+// I starting at size.z and growing by `growth` at each rejection for overlap. Returns the
+// placed bodies; throws std::runtime_error when I would pass max_top.
+std::vector<PlacedBody> insert_bodies_growing(BodyOverlapIndex& index, const PlacedBody& prototype, std::size_t count,
+                                              const Vec3& lo, const Vec3& size, double growth, double clearance,
+                                              std::mt19937_64& rng, double max_top);
 
 }  // namespace talus

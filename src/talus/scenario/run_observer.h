@@ -24,6 +24,9 @@ class RunObserver {
   virtual std::string stop_reason() const { return name(); }
   // After the last step: adds its figures to summary.json and writes its own files into `out`.
   virtual void finish(World& /*world*/, const std::filesystem::path& /*out*/, nlohmann::json& /*summary*/) {}
+  // `talus analyze DIR`: measures again from the files a finished run left in `dir` (for example
+  // with other thresholds set on the command line); returns false when it has nothing to redo.
+  virtual bool reanalyse(const std::filesystem::path& /*dir*/, nlohmann::json& /*summary*/) { return false; }
   // What a checkpoint must carry to resume the observer exactly where it was.
   virtual nlohmann::json state() const { return nlohmann::json::object(); }
   virtual void restore(const nlohmann::json& /*state*/) {}

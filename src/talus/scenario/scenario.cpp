@@ -8,6 +8,9 @@
 #include "talus/contact/parameter_procedure.h"
 #include "talus/scenario/chute.h"
 #include "talus/scenario/contact_reader.h"
+#include "talus/scenario/dam_break.h"
+#include "talus/scenario/dam_break_observer.h"
+#include "talus/scenario/hopper_observer.h"
 #include "talus/scenario/insertion.h"
 #include "talus/scenario/rigid_body_type.h"
 #include "talus/shape/convex_shape.h"
@@ -206,6 +209,7 @@ Scenario load_scenario(ScenarioFile& f) {
   };
 
   std::unique_ptr<World> world;
+  DamBreakWalls dam_walls;
   ChuteSetup chute_setup;
   if (chute) {
     chute_setup.length = f.get_or<double>("chute.length", 20, io::positive);
@@ -215,14 +219,22 @@ Scenario load_scenario(ScenarioFile& f) {
     chute_setup.angle_deg = f.get_or<double>("chute.angle", 24, io::in_range(0, 89));
     chute_setup.seed = run.seed;
     chute_setup.model = ws.tangential_model;
-  } else {
-    ws.domain = read_domain(f);
+  }
+  const bool dam_break = f.has("dam_break");
+  DamBreakSetup dam;
+  if (dam_break) {
+    if (chute) f.fail("dam_break", "a scenario is either a chute or a dam break");
+    dam = read_dam_break(f);
+  }
+  if (!chute) {
+    ws.domain = dam_break ? dam_break_domain(dam) : read_domain(f);
     ws.contact_manifold = f.get_or<bool>("contact.manifold", false);
     ws.gravity = f.get_or<Vec3>("domain.gravity", Vec3{0, 0, -9.81});
   }
 
   // Contact parameters for every pair of species and every wall material.
   std::vector<std::string> materials;
+  if (dam_break) material_index(materials, "wall");
   if (!chute) {
     // Walls first: they name the materials.
     World probe(ws);
@@ -281,6 +293,7 @@ Scenario load_scenario(ScenarioFile& f) {
     world = build_chute(chute_setup);
   } else {
     world = std::make_unique<World>(ws);
+    if (dam_break) dam_walls = add_dam_break_walls(*world, dam, material_index(materials, "wall"));
     read_walls(f, *world, materials);
     for (SpeciesInfo& s : species)
       if (s.body) s.shape_index = world->add_shape(s.body->shape);
@@ -352,6 +365,17 @@ Scenario load_scenario(ScenarioFile& f) {
       world->add_particle(p);
     }
   }
+  if (dam_break) {
+    const int s = species_index("dam_break.species");
+    const CompositeShape* shape = species[s].body ? &world->shapes()[species[s].shape_index] : nullptr;
+    try {
+      fill_dam_break(*world, dam, species[s].particle({}, {}, s), shape, rng);
+    } catch (const std::runtime_error& e) {
+      f.fail("dam_break.count", std::string(e.what()) + "; raise dam_break.domain_height or lower the count");
+    }
+    sc.observers.push_back(std::make_unique<DamBreakObserver>(dam, dam_walls));
+  }
+  if (f.has("hopper")) sc.observers.push_back(std::make_unique<HopperObserver>(read_hopper(f, domain.lo, domain.hi)));
   const std::size_t pour_count = f.array_size("pour");
   for (std::size_t k = 0; k < pour_count; ++k) {
     const std::string key = indexed("pour", k);

@@ -1,20 +1,18 @@
 // The contact-force phase of World::step(): particle pairs by slab colouring, then walls.
 #include <omp.h>
 
+#include <algorithm>
+
 #include "talus/world/memory_ref.h"
 #include "talus/world/parallel.h"
 #include "talus/world/world.h"
 
 namespace talus {
 
+// Forces and torques arrive zeroed (by the drift and the ghost refresh, which touch every
+// particle anyway); this pass only adds.
 void World::compute_forces(double memory_dt) {
   ParticleStore& p = particles_;
-  const long n = static_cast<long>(p.size());
-#pragma omp parallel for schedule(static) if (worth_parallel(p.size()))
-  for (long i = 0; i < n; ++i) {
-    p.force[i] = {};
-    p.torque[i] = {};
-  }
   with_tangential_model(settings_.tangential_model, [&](auto model) { pair_forces<model.value>(memory_dt); });
   ghosts_.fold_forces(p);
   if (walls_.empty()) return;
@@ -33,7 +31,6 @@ void World::pair_forces(double memory_dt) {
   const bool has_shapes = has_composites();
   // Rigid shapes cost a narrow phase per part pair: a team pays off with far fewer bodies.
   const bool parallel = worth_parallel(has_shapes ? 16 * p.owned : p.owned);
-  const long slabs = static_cast<long>(list.slabs());
   // Raw pointers: the force writes cannot alias the arrays read, and the compiler may keep
   // the bases in registers.
   const Vec3* __restrict position = p.position.data();
@@ -43,17 +40,26 @@ void World::pair_forces(double memory_dt) {
   const double* __restrict inv_mass = p.inv_mass.data();
   const std::int32_t* __restrict species = p.species.data();
   const std::int32_t* __restrict shape = p.shape.data();
+  const std::uint32_t* __restrict neighbor = list.neighbors();
   Vec3* __restrict force = p.force.data();
   Vec3* __restrict torque = p.torque.data();
   Vec3* __restrict spring = has_spring ? mem.spring.data() : nullptr;
   Vec3* __restrict normal_prev = has_normal ? mem.normal_prev.data() : nullptr;
   Vec3* __restrict rolling = has_rolling ? mem.rolling.data() : nullptr;
+  // An entry remembers a past contact iff this memory is non-zero: the previous normal when it
+  // is kept (set at every touching step, and the other memories change only then), else the
+  // spring, the only memory left. Null: nothing to forget.
+  const Vec3* __restrict marker = has_normal ? normal_prev : spring;
 
-  // Slab s writes to slabs s and s + 1 only: even slabs run together, then odd ones.
+  const std::vector<std::uint32_t>& chunk = list.slab_chunks();
+  const long chunks = static_cast<long>(chunk.size()) - 1;
+  // Chunk c writes to its own slabs and the first slab of chunk c + 1 only: even chunks run
+  // together, then odd ones. The chunks depend on the list alone, never on the thread count,
+  // so every particle receives its contributions in the same order on any team.
   for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(dynamic, 1) if (parallel)
-    for (long s = colour; s < slabs; s += 2) {
-      for (std::uint32_t i = list.slab_begin(s); i < list.slab_end(s); ++i) {
+#pragma omp parallel for schedule(static, 1) if (parallel && chunks > 2)
+    for (long c = colour; c < chunks; c += 2) {
+      for (std::uint32_t i = list.slab_begin(chunk[c]); i < list.slab_begin(chunk[c + 1]); ++i) {
         const Vec3 xi = position[i];
         const double ri = radius[i];
         const double inv_mi = inv_mass[i];
@@ -61,29 +67,26 @@ void World::pair_forces(double memory_dt) {
         Vec3 fi, ti;
         const std::uint32_t row_end = list.row_end(i);
         for (std::uint32_t e = list.row_begin(i); e < row_end; ++e) {
-          const std::uint32_t j = list.neighbor(e);
+          const std::uint32_t j = neighbor[e];
           const Vec3 d = xi - position[j];
           const double rj = radius[j];
           const double reach = ri + rj;
           const double dist2 = norm2(d);
-          if (has_shapes && (shape[i] != 0 || shape[j] != 0)) {  // rigid shapes: contacts between convex parts
-            if (dist2 >= reach * reach) {
-              pair_sub_[e].clear();
-              continue;
+          if (dist2 >= reach * reach) {  // apart: a later contact starts afresh
+            if (has_shapes) pair_sub_[e].clear();
+            if (marker && marker[e] != Vec3{}) {
+              if (has_spring) spring[e] = {};
+              if (has_normal) normal_prev[e] = {};
+              if (has_rolling) rolling[e] = {};
             }
+            continue;
+          }
+          if (has_shapes && (shape[i] != 0 || shape[j] != 0)) {  // rigid shapes: contacts between convex parts
             const ContactResult r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt);
             fi += r.force_on_i;
             ti += r.torque_i;
             force[j] -= r.force_on_i;
             torque[j] += r.torque_j;
-            continue;
-          }
-          if (dist2 >= reach * reach) {  // apart: a later contact starts afresh
-            if (has_spring && norm2(spring[e]) > 0) spring[e] = {};
-            if (has_normal && norm2(normal_prev[e]) > 0) {
-              normal_prev[e] = {};
-              if (has_rolling) rolling[e] = {};
-            }
             continue;
           }
           const double dist = std::sqrt(dist2);
@@ -138,7 +141,7 @@ void World::wall_forces(double memory_dt) {
       const double gap = dot(p.position[i] - origin[w], wall.normal);
       list.force_on_wall[e] = {};
       if (p.shape[i] != 0) {
-        if (!active[w] || gap >= r) {
+        if (!active[w] || gap >= r || (wall.bounded && gap < 0)) {
           wall_sub_[e].clear();
           continue;
         }
@@ -148,7 +151,7 @@ void World::wall_forces(double memory_dt) {
         list.force_on_wall[e] = -res.force_on_i;
         continue;
       }
-      if (!active[w] || gap >= r || !wall_faces(wall, origin[w], p.position[i], 0.0)) {
+      if (!active[w] || gap >= r || (wall.bounded && gap < 0) || !wall_faces(wall, origin[w], p.position[i], 0.0)) {
         mem.clear(e);
         continue;
       }

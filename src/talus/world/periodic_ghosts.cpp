@@ -61,6 +61,21 @@ void PeriodicGhosts::update_velocities(ParticleStore& p) const {
   }
 }
 
+void PeriodicGhosts::refresh(ParticleStore& p) const {
+  const long n = static_cast<long>(owner_.size());
+#pragma omp parallel for schedule(static) if (worth_parallel(owner_.size()))
+  for (long g = 0; g < n; ++g) {
+    const std::size_t k = p.owned + g;
+    const std::uint32_t o = owner_[g];
+    p.position[k] = p.position[o] + shift_[g];
+    p.orientation[k] = p.orientation[o];
+    p.velocity[k] = p.velocity[o];
+    p.angular_velocity[k] = p.angular_velocity[o];
+    p.force[k] = {};
+    p.torque[k] = {};
+  }
+}
+
 void PeriodicGhosts::fold_forces(ParticleStore& p) const {
   for (std::size_t g = 0; g < owner_.size(); ++g) {
     const std::size_t k = p.owned + g;

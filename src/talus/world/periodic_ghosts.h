@@ -18,6 +18,8 @@ class PeriodicGhosts {
               std::vector<CellCoord>& cell_of);
   void update_positions(ParticleStore& particles) const;   ///< positions and orientations
   void update_velocities(ParticleStore& particles) const;  ///< velocities and angular velocities
+  // Both updates in one pass, and ghost forces and torques reset for the next force pass.
+  void refresh(ParticleStore& particles) const;
   void fold_forces(ParticleStore& particles) const;        ///< adds ghost forces to owners, in ghost order
   std::size_t count() const { return owner_.size(); }
   std::uint32_t owner(std::size_t ghost) const { return owner_[ghost]; }

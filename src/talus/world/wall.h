@@ -29,7 +29,8 @@ struct Wall {
   Vec3 normal{0, 0, 1}; ///< unit, pointing into the region where particles live
   int material = 0;     ///< wall material index, for the contact parameter table
   // A bounded wall acts only where the particle's projection falls inside the rectangle
-  // origin + a u + b v, |a| <= half_extent_u, |b| <= half_extent_v.
+  // origin + a u + b v, |a| <= half_extent_u, |b| <= half_extent_v, and only on particles whose
+  // centre is in front of it: a thin plate, so what passed under a rising gate is left alone.
   bool bounded = false;
   Vec3 axis_u, axis_v;           ///< unit, in-plane axes of the rectangle
   double half_extent_u = 0, half_extent_v = 0;  ///< m

@@ -1,5 +1,7 @@
 #include "talus/world/world.h"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -10,7 +12,18 @@
 
 namespace talus {
 
-World::World(const WorldSettings& settings) : settings_(settings) {}
+namespace {
+// Large arrays come straight from the system (mmap) and go back to it when freed. Left alone,
+// glibc raises its mmap threshold at the first such free, and the arrays that every neighbour
+// rebuild allocates and frees then stay resident in the heap (a third of the peak memory of
+// the 32,000-particle chute).
+void return_large_arrays_to_system() {
+  static const bool done = [] { return mallopt(M_MMAP_THRESHOLD, 256 * 1024) == 1; }();
+  (void)done;
+}
+}  // namespace
+
+World::World(const WorldSettings& settings) : settings_(settings) { return_large_arrays_to_system(); }
 
 std::uint32_t World::add_particle(const ParticleInit& init) {
   if (!(init.radius > 0)) throw std::invalid_argument("particle radius must be positive");
@@ -88,6 +101,8 @@ void World::prepare() {
   skin_ = settings_.skin > 0 ? settings_.skin : 0.3 * r_max;
   wall_force_.assign(walls_.size(), Vec3{});
   rebuild();
+  std::fill(particles_.force.begin(), particles_.force.end(), Vec3{});
+  std::fill(particles_.torque.begin(), particles_.torque.end(), Vec3{});
   compute_forces(0.0);  // forces at t0; memories do not advance
   ready_ = true;
 }
@@ -107,7 +122,9 @@ void World::rebuild() {
   ParticleStore& p = particles_;
   p.drop_ghosts();
   const Domain& domain = settings_.domain;
-  for (std::size_t i = 0; i < p.owned; ++i) p.position[i] = domain.wrap(p.position[i]);
+  const long owned = static_cast<long>(p.owned);
+#pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
+  for (long i = 0; i < owned; ++i) p.position[i] = domain.wrap(p.position[i]);
 
   const double range = interaction_range();
   for (int a = 0; a < 3; ++a)
@@ -115,37 +132,45 @@ void World::rebuild() {
       throw std::runtime_error("periodic box narrower than twice the interaction range");
   grid_.setup(domain, p.position, p.owned, range);
 
-  // Sort owned particles by cell, slab axis slowest: slabs become contiguous and neighbours close in memory.
-  std::vector<CellCoord> cell_of(p.owned);
-  std::vector<std::int64_t> key(p.owned);
-  const long owned = static_cast<long>(p.owned);
-#pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
-  for (long i = 0; i < owned; ++i) {
-    cell_of[i] = grid_.coord_of(p.position[i]);
-    key[i] = grid_.linear(cell_of[i]);
-  }
-  // Stable counting sort by cell.
-  std::vector<std::uint32_t> start(grid_.linear_size() + 1, 0);
-  for (long i = 0; i < owned; ++i) ++start[key[i] + 1];
-  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-  std::vector<std::uint32_t> order(p.owned);
-  for (long i = 0; i < owned; ++i) order[start[key[i]]++] = static_cast<std::uint32_t>(i);
+  // The memories the new list must find, compact (the entries in contact only), so that the
+  // old list is freed before the new one is built: the two never coexist at the peak.
+  CarriedContacts carried = pairs_.carry(gid_at_build_, next_gid_, has_composites());
+  pairs_.release();
 
-  p.permute_owned(order);
+  // Sort owned particles by cell, slab axis slowest: slabs become contiguous and neighbours
+  // close in memory. A stable counting sort; the cells are recomputed after the sort rather
+  // than permuted, which needs no second array.
+  std::vector<CellCoord> cell_of(p.owned);
   {
-    std::vector<CellCoord> sorted(p.owned);
-    for (std::size_t k = 0; k < p.owned; ++k) sorted[k] = cell_of[order[k]];
-    cell_of.swap(sorted);
+    std::vector<std::uint32_t> order(p.owned);
+#pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
+    for (long i = 0; i < owned; ++i) {
+      cell_of[i] = grid_.coord_of(p.position[i]);
+      order[i] = static_cast<std::uint32_t>(grid_.linear(cell_of[i]));  // the cell, until it is a rank
+    }
+    std::vector<std::uint32_t> start(grid_.linear_size() + 1, 0);
+    for (long i = 0; i < owned; ++i) ++start[order[i] + 1];
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    // order[i] becomes the new index of particle i; `from` is its inverse, what the permutation reads.
+    for (long i = 0; i < owned; ++i) order[i] = start[order[i]]++;
+    std::vector<std::uint32_t>().swap(start);
+    std::vector<std::uint32_t> from(p.owned);
+    for (long i = 0; i < owned; ++i) from[order[i]] = static_cast<std::uint32_t>(i);
+    std::vector<std::uint32_t>().swap(order);
+    p.permute_owned(from);
   }
+#pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
+  for (long i = 0; i < owned; ++i) cell_of[i] = grid_.coord_of(p.position[i]);
+  cell_of.reserve(p.owned + ghosts_.count() + ghosts_.count() / 8 + 64);  // ghosts append theirs: no doubling
   ghosts_.create(p, domain, grid_, range, cell_of);
   grid_.bin(cell_of);
 
   const MemoryLayout layout = memory_layout();
-  PairList old_pairs = std::move(pairs_);
-  pairs_ = PairList{};
   pairs_.build(p, cell_of, grid_, skin_, layout);
+  std::vector<CellCoord>().swap(cell_of);
   std::vector<std::int64_t> origin;
-  pairs_.transfer_memory(old_pairs, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
+  pairs_.restore_memory(carried, p.gid, has_composites() ? &origin : nullptr);
+  carried = CarriedContacts{};
   if (has_composites()) {
     std::vector<SubContactList> fresh(pairs_.entries());
     for (std::size_t e = 0; e < fresh.size(); ++e) {
@@ -184,16 +209,15 @@ void World::step() {
   const double dt = settings_.time_step;
   {
     ScopedPhase phase(timer_, Phase::integrate);
-    kick(particles_, 0.5 * dt, settings_.gravity);
-    max_displacement_ = std::sqrt(drift(particles_, dt, position_at_build_));
+    // Also zeroes the owned forces: the kick was their last reader.
+    max_displacement_ = std::sqrt(kick_drift(particles_, 0.5 * dt, dt, settings_.gravity, position_at_build_));
   }
   time_ += dt;
   if (needs_rebuild()) {
-    rebuild();
+    rebuild();  // new ghosts copy the current state, with zero forces
   } else {
-    ghosts_.update_positions(particles_);
+    ghosts_.refresh(particles_);
   }
-  ghosts_.update_velocities(particles_);
   compute_forces(dt);
   {
     ScopedPhase phase(timer_, Phase::integrate);

@@ -93,6 +93,9 @@ class World {
   std::uint64_t step_count() const { return steps_; }
   const WorldSettings& settings() const { return settings_; }
   void set_gravity(const Vec3& g) { settings_.gravity = g; }
+  // Switching the model drops the contact memory the new one does not keep (Huet et al. 2021,
+  // Sec. V B compares both on one packing).
+  void set_tangential_model(TangentialModel m) { settings_.tangential_model = m; invalidate(); }
   const ParticleStore& particles() const { return particles_; }
   ParticleStore& particles_mutable() { invalidate(); return particles_; }
   const std::vector<Wall>& walls() const { return walls_; }

@@ -1,0 +1,191 @@
+#!/usr/bin/env python3
+"""Runs one scenario for N seeds and aggregates the summaries: DIR/seed_<k>/ -> DIR/ensemble.json,
+DIR/ensemble.csv (one row per measurement) and DIR/runs.csv (one row per run).
+
+Usage: dam_break_ensemble.py run FILE --seeds N [--first-seed S] --jobs J --out DIR [--set k=v ...]
+       dam_break_ensemble.py aggregate DIR      (aggregate the seed_* folders already in DIR)
+
+Huet et al. 2021 repeat every case with different initial microstructures (Sec. IV A, Fig. 9:
+three to five runs per case) to tell repeatable cases from intermittent ones. The verdict rule:
+with at least two runs, a case is "intermittent" when some runs end stable (regime == "stable")
+and others do not (0 < stable runs < runs), "repeatable" otherwise; one run is "undetermined".
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+VERDICT_RULE = ("runs >= 2: intermittent if 0 < stable runs < runs (Huet et al. 2021, Fig. 9), "
+                "repeatable otherwise; runs < 2: undetermined")
+REGIMES = ("stable", "fractured", "collapsed")
+
+
+def write_atomic(path: Path, text: str) -> None:
+    """Writes to a temporary name and renames, so a reader never sees half a file."""
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(text)
+    os.replace(tmp, path)
+
+
+def flatten(value, prefix=""):
+    """Numeric leaves of a summary as {"dam_break.before_gate.whole.x": 1.0}; booleans count as
+    0/1 (their mean is the fraction of runs where they hold); strings and lists are left out."""
+    out = {}
+    if isinstance(value, dict):
+        for key, item in value.items():
+            out.update(flatten(item, f"{prefix}.{key}" if prefix else str(key)))
+    elif isinstance(value, bool):
+        out[prefix] = 1.0 if value else 0.0
+    elif isinstance(value, (int, float)) and math.isfinite(value):
+        out[prefix] = float(value)
+    return out
+
+
+def statistics(values):
+    """n, mean, sample standard deviation (n - 1 in the denominator; 0 for one run), min, max."""
+    n = len(values)
+    mean = sum(values) / n
+    std = math.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1)) if n > 1 else 0.0
+    return {"n": n, "mean": mean, "std": std, "min": min(values), "max": max(values)}
+
+
+def verdict(stable_runs: int, runs: int) -> str:
+    if runs < 2:
+        return "undetermined"
+    return "intermittent" if 0 < stable_runs < runs else "repeatable"
+
+
+def aggregate(summaries: dict) -> dict:
+    """{seed: summary} -> the ensemble record (measurement statistics, regimes, verdict)."""
+    flat = {seed: flatten(s) for seed, s in summaries.items()}
+    keys = sorted({k for f in flat.values() for k in f})
+    measurements = {k: statistics([f[k] for f in flat.values() if k in f]) for k in keys}
+    regimes = {seed: s.get("regime") for seed, s in summaries.items() if isinstance(s.get("regime"), str)}
+    counts = {r: sum(1 for v in regimes.values() if v == r) for r in REGIMES}
+    for v in regimes.values():
+        counts.setdefault(v, sum(1 for w in regimes.values() if w == v))
+    record = {"runs": len(summaries), "seeds": sorted(summaries), "measurements": measurements}
+    if regimes:
+        n = len(regimes)
+        record["regime_counts"] = counts
+        record["regime_fractions"] = {r: c / n for r, c in counts.items()}
+        record["stable_fraction"] = counts["stable"] / n
+        record["verdict"] = verdict(counts["stable"], n)
+        record["verdict_rule"] = VERDICT_RULE
+        record["majority_regime"] = max(REGIMES, key=lambda r: (counts[r], -REGIMES.index(r)))
+    return record
+
+
+RUN_COLUMNS = ["L0", "H0", "aspect_ratio", "runout", "final_height", "dam_break.runout_ratio",
+               "dam_break.runout_ratio_low", "dam_break.runout_ratio_high", "dam_break.height_ratio",
+               "dam_break.height_ratio_low", "dam_break.height_ratio_high", "dam_break.com_ratio",
+               "dam_break.time_scale", "dam_break.gate_open_time", "coordination_number", "repose_angle",
+               "repose_angle_left", "repose_angle_right", "wall_seconds"]
+
+
+def seed_folders(folder: Path):
+    """{seed: path} of the finished runs (those with a summary.json) in `folder`."""
+    runs = {}
+    for d in folder.glob("seed_*"):
+        if (d / "summary.json").exists() and d.name[5:].isdigit():
+            runs[int(d.name[5:])] = d
+    return dict(sorted(runs.items()))
+
+
+def write_ensemble(folder: Path, meta: dict | None = None) -> dict:
+    runs = seed_folders(folder)
+    if not runs:
+        sys.exit(f"ensemble: no seed_*/summary.json in {folder}")
+    summaries = {seed: json.loads((d / "summary.json").read_text()) for seed, d in runs.items()}
+    record = dict(meta or {})
+    old = folder / "ensemble.json"
+    if not meta and old.exists():  # keep what the run command recorded (case, overrides)
+        record.update({k: v for k, v in json.loads(old.read_text()).items() if k in ("case", "overrides")})
+    record.update(aggregate(summaries))
+    write_atomic(folder / "ensemble.json", json.dumps(record, indent=2) + "\n")
+    lines = ["measurement,n,mean,std,min,max"]
+    for key, s in record["measurements"].items():
+        lines.append(f"{key},{s['n']},{s['mean']:.10g},{s['std']:.10g},{s['min']:.10g},{s['max']:.10g}")
+    write_atomic(folder / "ensemble.csv", "\n".join(lines) + "\n")
+    columns = [c for c in RUN_COLUMNS if c in record["measurements"]]
+    rows = ["seed,regime," + ",".join(columns)]
+    for seed, s in summaries.items():
+        f = flatten(s)
+        rows.append(f"{seed},{s.get('regime', '')}," + ",".join(f"{f[c]:.10g}" if c in f else "" for c in columns))
+    write_atomic(folder / "runs.csv", "\n".join(rows) + "\n")
+    return record
+
+
+def run_all(jobs_list, jobs: int, talus: str) -> list:
+    """Runs every (scenario, out, overrides) with at most `jobs` at a time, one thread each;
+    returns the failed ones. Finished runs (summary.json present) are not run again."""
+    env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE", OMP_NUM_THREADS="1")
+    pending = [j for j in jobs_list if not (j[1] / "summary.json").exists()]
+    running, failed, done = [], [], len(jobs_list) - len(pending)
+    total = len(jobs_list)
+    while pending or running:
+        while pending and len(running) < jobs:
+            scenario, out, overrides = pending.pop(0)
+            out.parent.mkdir(parents=True, exist_ok=True)
+            log = open(out.parent / f"{out.name}.log", "w")
+            cmd = [talus, "run", str(scenario), "--out", str(out), "--threads", "1", "--quiet", "--overwrite"]
+            for o in overrides:
+                cmd += ["--set", o]
+            running.append((subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, env=env), out, log))
+        time.sleep(0.5)
+        for entry in list(running):
+            proc, out, log = entry
+            if proc.poll() is None:
+                continue
+            running.remove(entry)
+            log.close()
+            done += 1
+            status = "ok" if proc.returncode == 0 else f"failed ({proc.returncode}), see {out}.log"
+            if proc.returncode != 0:
+                failed.append(out)
+            print(f"[{done}/{total}] {out}: {status}", flush=True)
+    return failed
+
+
+def seed_jobs(scenario: str, out: Path, seeds: int, first_seed: int, overrides: list):
+    return [(Path(scenario), out / f"seed_{k}", overrides + [f"run.seed={k}"])
+            for k in range(first_seed, first_seed + seeds)]
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    run = sub.add_parser("run")
+    run.add_argument("scenario")
+    run.add_argument("--seeds", type=int, required=True)
+    run.add_argument("--first-seed", type=int, default=1)
+    run.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    run.add_argument("--out", required=True)
+    run.add_argument("--set", action="append", default=[], dest="overrides")
+    run.add_argument("--talus", default="talus", help="the talus executable")
+    agg = sub.add_parser("aggregate")
+    agg.add_argument("dir")
+    args = parser.parse_args()
+    if args.command == "aggregate":
+        record = write_ensemble(Path(args.dir))
+    else:
+        if args.seeds < 1 or args.jobs < 1:
+            sys.exit("ensemble: --seeds and --jobs must be at least 1")
+        out = Path(args.out)
+        failed = run_all(seed_jobs(args.scenario, out, args.seeds, args.first_seed, args.overrides), args.jobs, args.talus)
+        record = write_ensemble(out, {"case": args.scenario, "overrides": args.overrides})
+        if failed:
+            print(f"ensemble: {len(failed)} run(s) failed: {', '.join(map(str, failed))}", file=sys.stderr)
+    line = f"{record['runs']} runs"
+    if "verdict" in record:
+        line += f", stable fraction {record['stable_fraction']:.2f}, {record['verdict']}"
+    print(f"{args.dir if args.command == 'aggregate' else args.out}/ensemble.json: {line}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,343 @@
+#!/usr/bin/env python3
+"""Figures of the dam-break study (Huet et al. 2021) and of the hopper validation (Appendix B 2)
+from results folders, as PNG files in the folder.
+
+Usage: dam_break_plots.py DIR [--snapshot-times T1,T2,...]
+  DIR a dam-break run   runout and height profiles (Fig. 5), speeds (Fig. 12), force PDF
+                        (Fig. 15), fabric rose (Fig. 17), side snapshots (Figs. 6-8, needs
+                        run.vtk_interval; times in s after the gate opened, default 0, 1, 2, 3, 5
+                        and 8 tau_c), energies
+  DIR an ensemble       every run's speed curve (Figs. 12-13), force PDF and fabric averaged over
+                        the runs (Figs. 15, 17), runout and height ratios per run (Figs. 10-11)
+  DIR a sweep           flow map (Fig. 9), runout ratio (Fig. 10), height ratio (Fig. 11),
+                        centre-of-mass ratio (Fig. 24) against a; repose angle against the swept
+                        value for a hopper sweep (Fig. 23)
+  DIR a hopper run      the pile's surface profile with the fitted flanks"""
+import argparse
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+TOOLS = Path(__file__).resolve().parent
+MARKERS = {"collapsed": ("o", "tab:blue"), "fractured": ("s", "tab:green"), "stable": ("^", "tab:orange")}
+
+
+def read_csv(path: Path):
+    return np.genfromtxt(path, delimiter=",", names=True, ndmin=1)
+
+
+def save(fig, path: Path) -> None:
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    print(path)
+
+
+# Lajeunesse, Monnier & Homsy, Phys. Fluids 17, 103302 (2005), quasi-2D channel with glass beads:
+# (L_inf - L0)/L0 = 1.2 a for a < 3 and 1.9 a^(2/3) for a > 3 (the two fits meet near a = 4;
+# each is drawn only on its own range). Huet et al. 2021 compare with these data in Fig. 10.
+def lajeunesse_lines(ax, a_max: float) -> None:
+    low = np.linspace(0, min(3.0, a_max), 50)
+    ax.plot(low, 1.2 * low, "k--", lw=1, label="Lajeunesse et al. 2005: 1.2 a (a < 3)")
+    if a_max > 3:
+        high = np.linspace(3.0, a_max, 50)
+        ax.plot(high, 1.9 * high ** (2 / 3), "k:", lw=1, label=r"Lajeunesse et al. 2005: 1.9 a$^{2/3}$ (a > 3)")
+
+
+# ---------------------------------------------------------------- one dam-break run
+def profiles(folder: Path, summary: dict) -> None:
+    """Huet et al. 2021, Fig. 5: top-view column intensity with L_inf, and the height profile."""
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
+    runout = read_csv(folder / "runout_profile.csv")
+    left.plot(runout["x"] * 100, runout["intensity"], "k-", label="column intensity")
+    for key, style, label in [("runout", "--", "L$_\\infty$ (10 %)"), ("runout_low", ":", "20 %"), ("runout_high", "-.", "1 %")]:
+        if key in summary:
+            left.axvline(summary[key] * 100, color="tab:red", ls=style, label=label)
+    left.axvline(summary.get("L0", 0) * 100, color="grey", lw=0.8, label="L$_0$")
+    left.set_xlabel("x (cm)")
+    left.set_ylabel("occupied fraction of the pixel column")
+    left.legend(fontsize=8)
+    heights = read_csv(folder / "height_profile.csv")
+    right.plot(heights["y"] * 100, heights["initial_height"] * 100, color="grey", label="initial")
+    right.plot(heights["y"] * 100, heights["final_height"] * 100, "k-", label="final")
+    for key, style in [("final_height", "--"), ("final_height_q1", ":"), ("final_height_q3", ":")]:
+        if key in summary:
+            right.axhline(summary[key] * 100, color="tab:red", ls=style, lw=1)
+    right.set_xlabel("y (cm)")
+    right.set_ylabel("height (cm)")
+    right.set_title("mean H$_\\infty$ (dashed), quartiles (dotted)", fontsize=9)
+    right.legend(fontsize=8)
+    save(fig, folder / "fig05_runout_height_profiles.png")
+
+
+def speeds(ax, folder: Path, **style) -> None:
+    data = read_csv(folder / "collapse_speeds.csv")
+    if data.size:
+        ax.plot(data["time_over_tau"], data["speed_over_sqrt_gH0"], **style)
+
+
+def speed_axes(ax) -> None:
+    """Huet et al. 2021, Figs. 12-13: v_avg / sqrt(g H0) against t / tau_c, tau_c = sqrt(H0 / g)."""
+    ax.set_xlabel(r"$t / \tau_c$")
+    ax.set_ylabel(r"$v_{avg} / \sqrt{g H_0}$")
+    ax.axhline(0.05, color="grey", lw=0.6, ls=":")  # Sec. IV B 2: "below 5 % of v0"
+
+
+def force_pdf_axes(axes, tables, label_prefix=""):
+    """Huet et al. 2021, Fig. 15: PDF of F_c / <F_c> before the gate opens, linear and log."""
+    for scale, ax in zip((0, 1), axes):
+        rows = [t[t["scale"] == scale] for t in tables]
+        if len(tables) > 1:
+            for r in rows:
+                ax.plot(r["force_ratio"], r["density"], ".", color="tab:blue", ms=2, alpha=0.4)
+        mean = np.mean([r["density"] for r in rows], axis=0)
+        if scale == 1:  # empty bins have no logarithm
+            mean = np.where(mean > 0, mean, np.nan)
+        ax.plot(rows[0]["force_ratio"], mean, "k-", label=f"{label_prefix}mean of {len(tables)} run(s)")
+        ax.set_xlabel(r"$F_c / \langle F_c \rangle$")
+        ax.set_ylabel("PDF")
+    axes[1].set_xscale("log")
+    axes[1].set_yscale("log")
+    axes[0].set_title("linear", fontsize=9)
+    axes[1].set_title("logarithmic", fontsize=9)
+    axes[0].legend(fontsize=8)
+
+
+def fabric_rose(folder: Path, tables, title: str) -> None:
+    """Huet et al. 2021, Fig. 17: distribution of the branch-vector angle in the xz plane."""
+    fig = plt.figure(figsize=(5, 5))
+    ax = fig.add_subplot(projection="polar")
+    theta = tables[0]["theta"]
+    mean = np.mean([t["density"] for t in tables], axis=0)
+    # A branch vector has no sign: theta and theta + pi are the same direction.
+    full_theta = np.concatenate([theta, theta + np.pi, theta[:1]])
+    full = np.concatenate([mean, mean, mean[:1]])
+    ax.plot(full_theta, full, "k-")
+    ax.fill(full_theta, full, alpha=0.2)
+    ax.set_title(title, fontsize=9)
+    save(fig, folder / "fig17_fabric_rose.png")
+
+
+def snapshots(folder: Path, summary: dict, times) -> None:
+    """Huet et al. 2021, Figs. 6-8: side views of the column at chosen times after the gate opened."""
+    if not (folder / "vtk" / "particles.pvd").exists():
+        print(f"{folder}: no vtk/ frames (set run.vtk_interval) - no snapshots", file=sys.stderr)
+        return
+    db = summary.get("dam_break", {})
+    gate = db.get("gate_open_time", 0.0)
+    if times is None:
+        tau = db.get("time_scale", 0.0)
+        times = [k * tau for k in (0, 1, 2, 3, 5, 8)]
+    out = folder / "snapshots"
+    out.mkdir(exist_ok=True)
+    frames = []
+    for t in times:
+        target = out / f"side_t{t:.3f}s.png"
+        subprocess.run([sys.executable, str(TOOLS / "render.py"), str(folder), "--view", "side", "--time",
+                        str(gate + t), "--out", str(target)], check=True, stdout=subprocess.DEVNULL)
+        frames.append((t, target))
+        print(target)
+    # One strip, left to right in time, as the paper shows them.
+    fig, axes = plt.subplots(1, len(frames), figsize=(3.2 * len(frames), 2.6))
+    for ax, (t, target) in zip(np.atleast_1d(axes), frames):
+        ax.imshow(plt.imread(target))
+        ax.set_title(f"t = {t:.3g} s after the gate opened", fontsize=8)
+        ax.axis("off")
+    save(fig, folder / "fig06_08_side_snapshots.png")
+
+
+def run_figures(folder: Path, snapshot_times) -> None:
+    summary = json.loads((folder / "summary.json").read_text())
+    profiles(folder, summary)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    speeds(ax, folder, color="k")
+    speed_axes(ax)
+    ax.set_title(f"a = {summary.get('aspect_ratio', float('nan')):.2f}, {summary.get('regime', '')}", fontsize=9)
+    save(fig, folder / "fig12_speeds.png")
+    if (folder / "force_pdf.csv").exists():
+        fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+        force_pdf_axes(axes, [read_csv(folder / "force_pdf.csv")])
+        save(fig, folder / "fig15_force_pdf.png")
+    if (folder / "fabric.csv").exists():
+        fabric_rose(folder, [read_csv(folder / "fabric.csv")], "branch vectors in the xz plane, before the gate opens")
+    snapshots(folder, summary, snapshot_times)
+    sys.path.insert(0, str(TOOLS))
+    import plot_timeseries
+    plot_timeseries.main(folder)
+
+
+# ---------------------------------------------------------------- an ensemble of runs
+def ensemble_figures(folder: Path) -> None:
+    record = json.loads((folder / "ensemble.json").read_text())
+    runs = sorted((int(d.name[5:]), d) for d in folder.glob("seed_*") if (d / "summary.json").exists())
+    summaries = {seed: json.loads((d / "summary.json").read_text()) for seed, d in runs}
+    title = f"{record.get('case', folder.name)}: {record['runs']} runs, {record.get('verdict', '')}"
+    if any((d / "collapse_speeds.csv").exists() for _, d in runs):
+        fig, ax = plt.subplots(figsize=(6, 4))
+        for seed, d in runs:
+            if (d / "collapse_speeds.csv").exists():
+                regime = summaries[seed].get("regime", "collapsed")
+                speeds(ax, d, color=MARKERS.get(regime, ("o", "k"))[1], lw=1, label=f"seed {seed} ({regime})")
+        speed_axes(ax)
+        ax.legend(fontsize=7)
+        ax.set_title(title, fontsize=9)
+        save(fig, folder / "fig12_speeds.png")
+    pdfs = [read_csv(d / "force_pdf.csv") for _, d in runs if (d / "force_pdf.csv").exists()]
+    if pdfs:
+        fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+        force_pdf_axes(axes, pdfs)
+        save(fig, folder / "fig15_force_pdf.png")
+    roses = [read_csv(d / "fabric.csv") for _, d in runs if (d / "fabric.csv").exists()]
+    if roses:
+        fabric_rose(folder, roses, f"branch vectors in the xz plane, mean of {len(roses)} runs")
+    flat = [s for s in summaries.values() if "dam_break" in s and "aspect_ratio" in s]
+    if flat:
+        fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+        for s in flat:
+            db = s["dam_break"]
+            m, c = MARKERS.get(s.get("regime"), ("o", "k"))
+            a = s["aspect_ratio"]
+            left.errorbar(a, db["runout_ratio"], yerr=[[db["runout_ratio"] - db["runout_ratio_low"]],
+                                                         [db["runout_ratio_high"] - db["runout_ratio"]]], fmt=m, color=c)
+            right.errorbar(a, db["height_ratio"], yerr=[[db["height_ratio"] - db["height_ratio_low"]],
+                                                          [db["height_ratio_high"] - db["height_ratio"]]], fmt=m, color=c)
+        lajeunesse_lines(left, max(s["aspect_ratio"] for s in flat) * 1.3)
+        left.set_xlabel(r"$a = H_0 / L_0$")
+        left.set_ylabel(r"$(L_\infty - L_0) / L_0$")
+        left.legend(fontsize=7)
+        right.set_xlabel(r"$a = H_0 / L_0$")
+        right.set_ylabel(r"$H_0 / H_\infty$")
+        fig.suptitle(title, fontsize=9)
+        save(fig, folder / "fig10_fig11_runs.png")
+
+
+# ---------------------------------------------------------------- a sweep
+def sweep_figures(folder: Path) -> None:
+    sweep = json.loads((folder / "sweep.json").read_text())
+    points = sweep["points"]
+    if points and "repose_angle_mean" in points[0]:
+        return repose_figure(folder, sweep)
+    points = [p for p in points if "aspect_ratio_mean" in p]
+    if not points:
+        print(f"{folder}: no dam-break measurements in sweep.json", file=sys.stderr)
+        return
+    # Fig. 9: one marker per case at (L0, mean H0), by regime; intermittent cases stand out.
+    fig, ax = plt.subplots(figsize=(6, 5))
+    shown = set()
+    for p in points:
+        if p.get("verdict") == "intermittent":
+            marker, colour, label = "X", "tab:red", "intermittent"
+        else:
+            regime = p.get("majority_regime", "collapsed")
+            marker, colour = MARKERS.get(regime, ("o", "k"))
+            label = f"repeatable, {regime}"
+        ax.plot(p["L0_mean"] * 100, p["H0_mean"] * 100, marker, color=colour, ms=9,
+                label=None if label in shown else label)
+        shown.add(label)
+        ax.annotate(f"{p.get('stable_fraction', 0):.0%} stable", (p["L0_mean"] * 100, p["H0_mean"] * 100),
+                    textcoords="offset points", xytext=(6, 4), fontsize=7)
+    ax.set_xlabel("L$_0$ (cm)")
+    ax.set_ylabel("H$_0$ (cm)")
+    ax.set_title(f"flow map, {sweep['seeds']} seeds per case", fontsize=9)
+    ax.legend(fontsize=8)
+    save(fig, folder / "fig09_flow_map.png")
+    a = np.array([p["aspect_ratio_mean"] for p in points])
+    a_std = np.array([p["aspect_ratio_std"] for p in points])
+    for key, name, ylabel, extra in [
+            ("dam_break.runout_ratio", "fig10_runout_ratio.png", r"$(L_\infty - L_0) / L_0$", lajeunesse_lines),
+            ("dam_break.height_ratio", "fig11_height_ratio.png", r"$H_0 / H_\infty$", None),
+            ("dam_break.com_ratio", "fig24_com_ratio.png", r"$\Delta x_{com} / x_{com,0}$", None)]:
+        if f"{key}_mean" not in points[0]:
+            continue
+        fig, ax = plt.subplots(figsize=(6, 4.5))
+        mean = np.array([p[f"{key}_mean"] for p in points])
+        std = np.array([p[f"{key}_std"] for p in points])
+        if f"{key}_low_mean" in points[0]:
+            # Sec. III C: the bar of one measurement (20 % / 1 % runout thresholds, height quartiles).
+            low = np.array([p[f"{key}_low_mean"] for p in points])
+            high = np.array([p[f"{key}_high_mean"] for p in points])
+            ax.errorbar(a, mean, yerr=[mean - low, high - mean], fmt="none", ecolor="grey", elinewidth=4, alpha=0.4,
+                        label="measurement bar (mean over seeds)")
+        ax.errorbar(a, mean, xerr=a_std, yerr=std, fmt="o", color="k", capsize=3, label="mean $\\pm$ std over seeds")
+        if extra:
+            extra(ax, float(a.max()) * 1.2)
+        ax.set_xlabel(r"$a = H_0 / L_0$")
+        ax.set_ylabel(ylabel)
+        ax.legend(fontsize=7)
+        save(fig, folder / name)
+
+
+def repose_figure(folder: Path, sweep: dict) -> None:
+    """Huet et al. 2021, Fig. 23: repose angle against the swept value (mu_c)."""
+    key = next(iter(sweep["grid"]))
+    points = [p for p in sweep["points"] if p.get("repose_angle_mean") is not None]
+    x = np.array([float(p[key]) for p in points])
+    y = np.array([p["repose_angle_mean"] for p in points])
+    e = np.array([p["repose_angle_std"] for p in points])
+    order = np.argsort(x)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    ax.errorbar(x[order], y[order], yerr=e[order], fmt="o-", color="k", capsize=3, label="Talus (mean $\\pm$ std over seeds)")
+    if key == "contact.friction":
+        ax.plot([0.5], [36], "s", color="tab:red", label="Huet et al. 2021: about 36 deg at $\\mu_c$ = 0.5")
+        ax.set_xlabel(r"$\mu_c$ (particle-particle)")
+    else:
+        ax.set_xlabel(key)
+    ax.set_ylabel("repose angle (deg)")
+    ax.legend(fontsize=8)
+    save(fig, folder / "fig23_repose_angle.png")
+
+
+def pile_figure(folder: Path) -> None:
+    summary = json.loads((folder / "summary.json").read_text())
+    profile = read_csv(folder / "pile_profile.csv")
+    h = summary.get("hopper", {})
+    fig, ax = plt.subplots(figsize=(7, 3.5))
+    ax.step(profile["position"] * 100, profile["height"] * 100, where="mid", color="k", label="surface")
+    for side in ("left", "right"):
+        s, c = h.get(f"{side}_slope"), h.get(f"{side}_intercept")
+        angle = summary.get(f"repose_angle_{side}")
+        if s is None or angle is None:
+            continue
+        x = profile["position"][(profile["position"] < h["apex"]) if side == "left" else (profile["position"] > h["apex"])]
+        line = s * x + c
+        keep = (line > 0) & (line <= summary["pile_height"])
+        ax.plot(x[keep] * 100, line[keep] * 100, "--", color="tab:red", label=f"{side}: {angle:.1f} deg")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (cm)")
+    ax.set_ylabel("height (cm)")
+    ax.set_title(f"repose angle {summary.get('repose_angle') or float('nan'):.1f} deg", fontsize=9)
+    ax.legend(fontsize=8)
+    save(fig, folder / "pile_profile.png")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("dir")
+    parser.add_argument("--snapshot-times", help="s after the gate opened, comma separated")
+    args = parser.parse_args()
+    folder = Path(args.dir)
+    times = [float(t) for t in args.snapshot_times.split(",")] if args.snapshot_times else None
+    if (folder / "sweep.json").exists():
+        sweep_figures(folder)
+    elif (folder / "ensemble.json").exists():
+        ensemble_figures(folder)
+    elif (folder / "collapse_speeds.csv").exists():
+        run_figures(folder, times)
+    elif (folder / "pile_profile.csv").exists():
+        pile_figure(folder)
+        sys.path.insert(0, str(TOOLS))
+        import plot_timeseries
+        plot_timeseries.main(folder)
+    else:
+        sys.exit(f"dam_break_plots: {folder} holds no dam-break, ensemble, sweep or hopper results")
+
+
+if __name__ == "__main__":
+    main()
