@@ -58,8 +58,10 @@ std::unique_ptr<World> make_cross_box_world(const CrossBoxSetup& setup) {
 double fill_cross_box(World& world, const CrossBoxSetup& setup) {
   const RigidBodyType type = huet_cross_type(setup.crust);
   std::mt19937_64 rng(setup.seed);
-  const std::vector<PlacedBody> bodies =
-      insert_bodies(type.shape, setup.count, {0, 0, 0}, setup.box, setup.insert_growth, rng, setup.insert_clearance);
+  BodyOverlapIndex index(type.radius);
+  const PlacedBody prototype{{}, {}, &type.shape, type.radius};
+  const std::vector<PlacedBody> bodies = insert_bodies_growing(index, prototype, setup.count, {0, 0, 0}, setup.box,
+                                                               setup.insert_growth, setup.insert_clearance, rng, 1e300);
   double top = 0;
   world.reserve_particles(world.owned_count() + bodies.size());
   for (const PlacedBody& b : bodies) {

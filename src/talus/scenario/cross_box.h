@@ -4,7 +4,7 @@
 //   make_cross_box_world(setup)  : an empty World, Table I contacts, five walls (x-, x+, y-, y+,
 //                                  floor: indices 0-4), the cross registered as shape 1
 //   fill_cross_box(world, setup) : places setup.count crosses at random (dense, exact part tests,
-//                                  body_insertion.h) from the floor up
+//                                  insert_bodies_growing of body_insertion.h) from the floor up
 #include <cstddef>
 #include <cstdint>
 #include <memory>
