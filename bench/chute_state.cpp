@@ -161,6 +161,10 @@ void save_state(const World& world, const std::filesystem::path& file) {
 }
 
 std::unique_ptr<World> load_state(const ChuteCase& c, const std::filesystem::path& file) {
+  return load_state(make_empty_chute_world(c.setup), file);
+}
+
+std::unique_ptr<World> load_state(std::unique_ptr<World> world, const std::filesystem::path& file) {
   Reader r(file);
   char magic[8];
   for (char& ch : magic) r.get(ch);
@@ -173,7 +177,6 @@ std::unique_ptr<World> load_state(const ChuteCase& c, const std::filesystem::pat
   r.get(time);
   r.get(n);
 
-  auto world = make_empty_chute_world(c.setup);
   world->reserve_particles(n);
   for (std::uint64_t k = 0; k < n; ++k) {
     ParticleInit init;

@@ -34,6 +34,8 @@ void save_state(const World& world, const std::filesystem::path& file);
 // A world rebuilt from `file` with make_empty_chute_world(c.setup); throws if the file is
 // missing, of another version, or corrupt.
 std::unique_ptr<World> load_state(const ChuteCase& c, const std::filesystem::path& file);
+// The same into any empty world with the settings, shapes and contact table of the saved one.
+std::unique_ptr<World> load_state(std::unique_ptr<World> empty, const std::filesystem::path& file);
 
 // The cached world of a case, generating the cache first if needed (build_chute, then run
 // until t = flow_time on `threads` OpenMP threads; progress goes to stderr).

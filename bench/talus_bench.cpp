@@ -269,6 +269,7 @@ int main(int argc, char** argv) {
     if (o.only == "crosspile") {
       CrossPileOptions c;
       c.crosses = o.crosses;
+      c.cache = o.cache;
       run_cross_pile(c, [](const char* name, double value, const char* unit) { metric(name, value, unit); });
       return 0;
     }

@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev
-  libtomlplusplus-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
+  libtomlplusplus-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libqhull-dev
   libhdf5-dev
   python3 python3-numpy python3-matplotlib
   python3-vtk9

@@ -8,12 +8,6 @@
 namespace talus {
 namespace {
 
-Vec3 axis_of(const Pose& p, int k) {
-  Vec3 e;
-  e[k] = 1;
-  return p.orientation.rotate(e);
-}
-
 // Closest points of segments p + s u and q + t v, |s| <= hp, |t| <= hq (Ericson Sec. 5.1.9).
 void closest_segments(const Vec3& p, const Vec3& u, double hp, const Vec3& q, const Vec3& v, double hq, Vec3* cp,
                       Vec3* cq) {
@@ -27,94 +21,124 @@ void closest_segments(const Vec3& p, const Vec3& u, double hp, const Vec3& q, co
   *cq = q + v * t;
 }
 
+// The 15 candidate axes of two boxes, in A's frame (Gottschalk et al. 1996).
+struct SatAxes {
+  const OrientedBox& a;
+  const OrientedBox& b;
+  double R[3][3], AbsR[3][3];
+  Vec3 t;  // centre of B in A's frame
+
+  SatAxes(const OrientedBox& a_, const OrientedBox& b_) : a(a_), b(b_) {
+    // The small bias keeps nearly parallel edge pairs (degenerate cross products) from winning.
+    constexpr double kBias = 1e-12;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) R[i][j] = dot(a.axis[i], b.axis[j]), AbsR[i][j] = std::abs(R[i][j]) + kBias;
+    const Vec3 d = b.centre - a.centre;
+    t = {dot(d, a.axis[0]), dot(d, a.axis[1]), dot(d, a.axis[2])};
+  }
+
+  // Overlap of the projections on axis k; false for a degenerate edge pair (parallel edges).
+  bool overlap(int k, double* out) const {
+    const Vec3& ha = a.half;
+    const Vec3& hb = b.half;
+    if (k < 3) {
+      *out = ha[k] + hb[0] * AbsR[k][0] + hb[1] * AbsR[k][1] + hb[2] * AbsR[k][2] - std::abs(t[k]);
+      return true;
+    }
+    if (k < 6) {
+      const int j = k - 3;
+      const double tj = t[0] * R[0][j] + t[1] * R[1][j] + t[2] * R[2][j];
+      *out = ha[0] * AbsR[0][j] + ha[1] * AbsR[1][j] + ha[2] * AbsR[2][j] + hb[j] - std::abs(tj);
+      return true;
+    }
+    const int i = (k - 6) / 3, j = (k - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+    const double len = std::sqrt(R[i1][j] * R[i1][j] + R[i2][j] * R[i2][j]);
+    if (!(len > 1e-6)) return false;
+    const double ra = ha[i1] * AbsR[i2][j] + ha[i2] * AbsR[i1][j];
+    const double rb = hb[j1] * AbsR[i][j2] + hb[j2] * AbsR[i][j1];
+    const double tl = t[i2] * R[i1][j] - t[i1] * R[i2][j];
+    *out = (ra + rb - std::abs(tl)) / len;
+    return true;
+  }
+
+  // World unit normal of axis k, from B to A.
+  Vec3 normal(int k) const {
+    if (k < 3) return t[k] > 0 ? -a.axis[k] : a.axis[k];
+    if (k < 6) {
+      const int j = k - 3;
+      const double tj = t[0] * R[0][j] + t[1] * R[1][j] + t[2] * R[2][j];
+      return tj > 0 ? -b.axis[j] : b.axis[j];
+    }
+    const int i = (k - 6) / 3, j = (k - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    const double tl = t[i2] * R[i1][j] - t[i1] * R[i2][j];
+    const Vec3 L = normalized_or_zero(cross(a.axis[i], b.axis[j]));
+    return tl > 0 ? -L : L;
+  }
+
+  BoxBoxSat result(int k, double depth, bool separated) const {
+    BoxBoxSat r;
+    r.separated = separated;
+    r.depth = depth;
+    r.normal = normal(k);
+    r.axis = k;
+    return r;
+  }
+};
+
 }  // namespace
 
-// Columns of the rotation matrix of q: the body axes in the world frame.
-void rotation_axes(const Quat& q, Vec3 axes[3]) {
-  const double xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z, xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z,
-               wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
-  axes[0] = {1 - 2 * (yy + zz), 2 * (xy + wz), 2 * (xz - wy)};
-  axes[1] = {2 * (xy - wz), 1 - 2 * (xx + zz), 2 * (yz + wx)};
-  axes[2] = {2 * (xz + wy), 2 * (yz - wx), 1 - 2 * (xx + yy)};
+BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis) {
+  const SatAxes s(a, b);
+  const bool warm = warm_axis >= 0 && warm_axis < 15;
+  double o = 0;
+  // A gap lasts many steps: the axis that separated last time usually still does.
+  if (warm && s.overlap(warm_axis, &o) && o < 0) return s.result(warm_axis, o, true);
+  // Most part pairs in a pile are apart: return at the first separating face axis. The gap
+  // reported is then a lower bound of the distance, not the largest one.
+  double overlap[15];
+  bool valid[15];
+  for (int k = 0; k < 6; ++k) {
+    valid[k] = s.overlap(k, &overlap[k]);
+    if (overlap[k] < 0) return s.result(k, overlap[k], true);
+  }
+  for (int k = 6; k < 15; ++k) {
+    valid[k] = s.overlap(k, &overlap[k]);
+    if (valid[k] && overlap[k] < 0) return s.result(k, overlap[k], true);
+  }
+  int best = -1;
+  const double edge_margin = 1e-9 * (norm(a.half) + norm(b.half));
+  for (int k = 0; k < 15; ++k) {
+    if (!valid[k]) continue;
+    // Face axes come first and edges must beat them by a relative margin: ties go to faces.
+    const double margin = k < 6 ? 0.0 : edge_margin;
+    if (best < 0 || overlap[k] < overlap[best] - margin) best = k;
+  }
+  if (warm && valid[warm_axis] && overlap[warm_axis] <= overlap[best] * 1.005) best = warm_axis;
+  return s.result(best, overlap[best], false);
 }
 
 BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, int warm_axis) {
-  Vec3 A[3], B[3];
-  rotation_axes(pa.orientation, A);
-  rotation_axes(pb.orientation, B);
-  double R[3][3], AbsR[3][3];
-  // The small bias keeps nearly parallel edge pairs (degenerate cross products) from winning.
-  constexpr double kBias = 1e-12;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) R[i][j] = dot(A[i], B[j]), AbsR[i][j] = std::abs(R[i][j]) + kBias;
-  const Vec3 d = pb.position - pa.position;
-  const Vec3 t{dot(d, A[0]), dot(d, A[1]), dot(d, A[2])};  // centre of B in A's frame
-
-  double overlap[15];
-  Vec3 normal[15];  // world, from B to A
-  bool valid[15];
-  // Most part pairs in a pile are apart: return at the first separating face axis. The gap
-  // reported is then a lower bound of the distance, not the largest one.
-  auto separated_by = [&](int k) {
-    BoxBoxSat r;
-    r.separated = true;
-    r.depth = overlap[k];
-    r.normal = normal[k];
-    r.axis = k;
-    return r;
-  };
-  for (int i = 0; i < 3; ++i) {
-    const double rb = hb[0] * AbsR[i][0] + hb[1] * AbsR[i][1] + hb[2] * AbsR[i][2];
-    overlap[i] = ha[i] + rb - std::abs(t[i]);
-    normal[i] = t[i] > 0 ? -A[i] : A[i];
-    valid[i] = true;
-    if (overlap[i] < 0) return separated_by(i);
-  }
-  for (int j = 0; j < 3; ++j) {
-    const double ra = ha[0] * AbsR[0][j] + ha[1] * AbsR[1][j] + ha[2] * AbsR[2][j];
-    const double tj = t[0] * R[0][j] + t[1] * R[1][j] + t[2] * R[2][j];
-    overlap[3 + j] = ra + hb[j] - std::abs(tj);
-    normal[3 + j] = tj > 0 ? -B[j] : B[j];
-    valid[3 + j] = true;
-    if (overlap[3 + j] < 0) return separated_by(3 + j);
-  }
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const int k = 6 + 3 * i + j, i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-      const double len = std::sqrt(R[i1][j] * R[i1][j] + R[i2][j] * R[i2][j]);
-      valid[k] = len > 1e-6;
-      if (!valid[k]) continue;
-      const double ra = ha[i1] * AbsR[i2][j] + ha[i2] * AbsR[i1][j];
-      const double rb = hb[j1] * AbsR[i][j2] + hb[j2] * AbsR[i][j1];
-      const double tl = t[i2] * R[i1][j] - t[i1] * R[i2][j];
-      overlap[k] = (ra + rb - std::abs(tl)) / len;
-      const Vec3 L = normalized_or_zero(cross(A[i], B[j]));
-      normal[k] = tl > 0 ? -L : L;
-    }
-
-  BoxBoxSat r;
-  int best = -1;
-  for (int k = 0; k < 15; ++k) {
-    if (!valid[k]) continue;
-    if (overlap[k] < 0) {  // separating axis: report the largest gap as a distance lower bound
-      if (!r.separated || overlap[k] < r.depth) r.depth = overlap[k], r.normal = normal[k], r.axis = k;
-      r.separated = true;
-    }
-    // Face axes come first and edges must beat them by a relative margin: ties go to faces.
-    const double margin = k < 6 ? 0.0 : 1e-9 * (norm(ha) + norm(hb));
-    if (best < 0 || overlap[k] < overlap[best] - margin) best = k;
-  }
-  if (r.separated) return r;
-  if (warm_axis >= 0 && warm_axis < 15 && valid[warm_axis] && overlap[warm_axis] <= overlap[best] * 1.005)
-    best = warm_axis;
-  r.depth = overlap[best];
-  r.normal = normal[best];
-  r.axis = best;
-  return r;
+  return box_box_sat(oriented_box(ha, pa), oriented_box(hb, pb), warm_axis);
 }
 
-PartContact box_box_contact(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, ContactCache* warm) {
-  const BoxBoxSat sat = box_box_sat(ha, pa, hb, pb, warm ? warm->sat_axis : -1);
+void box_box_edge_points(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat, PartContact& g) {
+  int i = 0, j = 0;
+  if (sat.axis >= 6) i = (sat.axis - 6) / 3, j = (sat.axis - 6) % 3;
+  Vec3 ea = a.centre, eb = b.centre;
+  for (int k = 0; k < 3; ++k) {
+    if (k != i || sat.axis < 6) ea += a.axis[k] * (dot(a.axis[k], -g.normal) >= 0 ? a.half[k] : -a.half[k]);
+    if (k != j || sat.axis < 6) eb += b.axis[k] * (dot(b.axis[k], g.normal) >= 0 ? b.half[k] : -b.half[k]);
+  }
+  if (sat.axis >= 6) {
+    closest_segments(ea, a.axis[i], a.half[i], eb, b.axis[j], b.half[j], &g.point_a, &g.point_b);
+  } else {
+    g.point_a = ea;
+    g.point_b = eb;
+  }
+}
+
+PartContact box_box_contact(const OrientedBox& a, const OrientedBox& b, ContactCache* warm) {
+  const BoxBoxSat sat = box_box_sat(a, b, warm ? warm->sat_axis : -1);
   if (warm) warm->sat_axis = sat.axis;
   PartContact g;
   g.method = ContactMethod::kBoxBoxSat;
@@ -122,10 +146,10 @@ PartContact box_box_contact(const Vec3& ha, const Pose& pa, const Vec3& hb, cons
   g.delta_n = sat.depth;
   if (sat.separated) return g;
   if (sat.axis < 6) {
-    const ContactManifold m = box_box_manifold(ha, pa, hb, pb, sat);
+    const ContactManifold m = box_box_manifold(a, b, sat);
     double deepest = 0;
     for (int k = 0; k < m.count; ++k) deepest = std::max(deepest, m.points[k].delta_n);
-    const double tol = 1e-9 * (norm(ha) + norm(hb)) + 1e-6 * deepest;
+    const double tol = 1e-9 * (norm(a.half) + norm(b.half)) + 1e-6 * deepest;
     int n = 0;
     for (int k = 0; k < m.count; ++k)
       if (m.points[k].delta_n >= deepest - tol) {
@@ -141,21 +165,12 @@ PartContact box_box_contact(const Vec3& ha, const Pose& pa, const Vec3& hb, cons
     }
   }
   // Edge pair (or an empty clip from rounding): closest points of the two supporting edges.
-  int i = 0, j = 0;
-  if (sat.axis >= 6) i = (sat.axis - 6) / 3, j = (sat.axis - 6) % 3;
-  Vec3 ea = pa.position, eb = pb.position;
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 a = axis_of(pa, k), b = axis_of(pb, k);
-    if (k != i || sat.axis < 6) ea += a * (dot(a, -g.normal) >= 0 ? ha[k] : -ha[k]);
-    if (k != j || sat.axis < 6) eb += b * (dot(b, g.normal) >= 0 ? hb[k] : -hb[k]);
-  }
-  if (sat.axis >= 6) {
-    closest_segments(ea, axis_of(pa, i), ha[i], eb, axis_of(pb, j), hb[j], &g.point_a, &g.point_b);
-  } else {
-    g.point_a = ea;
-    g.point_b = eb;
-  }
+  box_box_edge_points(a, b, sat, g);
   return finish_contact(g);
+}
+
+PartContact box_box_contact(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, ContactCache* warm) {
+  return box_box_contact(oriented_box(ha, pa), oriented_box(hb, pb), warm);
 }
 
 }  // namespace talus

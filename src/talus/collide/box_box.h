@@ -4,25 +4,34 @@
 // gives depth and normal; face axes win ties and, when warm-started, the previous axis is
 // kept while within 0.5 % of the least overlap, so the normal does not flip between nearly
 // equal faces from step to step (a flipping normal corrupts tangential history).
-//   box_box_sat(...)     : the axis test alone
+//   box_box_sat(...)     : the axis test alone; a warm axis that still separates is tried first
+//                          (a cached separating axis: one axis test for a lasting gap)
 //   box_box_contact(...) : single contact point; for a face axis C is the centroid of the
 //                          deepest clipped manifold points (manifold.h), for an edge pair the
 //                          midpoint of the closest points of the two edges.
+//   box_box_edge_points(): the closest points of the two supporting edges of an edge axis
 #include "talus/collide/convex_contact.h"
+#include "talus/collide/oriented_box.h"
 
 namespace talus {
 
 struct BoxBoxSat {
   bool separated = false;
-  double depth = 0;  ///< least overlap (m); when separated, minus the largest gap found (a lower bound)
+  double depth = 0;  ///< least overlap (m); when separated, minus a gap found (a lower bound of the distance)
   Vec3 normal;       ///< unit, from B to A (world)
   int axis = -1;     ///< 0-2: faces of A, 3-5: faces of B, 6 + 3i + j: edge i of A x edge j of B
 };
 
+BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis = -1);
 BoxBoxSat box_box_sat(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                       int warm_axis = -1);
 
+PartContact box_box_contact(const OrientedBox& a, const OrientedBox& b, ContactCache* warm = nullptr);
 PartContact box_box_contact(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
-                                ContactCache* warm = nullptr);
+                            ContactCache* warm = nullptr);
+
+// Deepest points for a non-face axis (or a face clip emptied by rounding): point_a on A,
+// point_b on B, set in g (whose normal is the SAT normal).
+void box_box_edge_points(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat, PartContact& g);
 
 }  // namespace talus

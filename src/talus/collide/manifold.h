@@ -3,8 +3,9 @@
 // against a face (goes beyond Huet et al. 2021, who use one point for these cases).
 //   box_box_manifold(...)      : reference face = face of the SAT axis; the most anti-parallel
 //                                face of the other box is clipped against the reference face's
-//                                side planes (Sutherland-Hodgman); points below the reference
-//                                face are kept. Edge-edge axes give one point.
+//                                side planes (Sutherland-Hodgman, on fixed arrays: no heap in
+//                                the hot path); points below the reference face are kept.
+//                                Edge-edge axes give one point.
 //   convex_plane_manifold(...) : box / polyhedron vertices below a half-space (nominal sharp
 //                                geometry); spheres and cylinders give the single support point.
 //   contact_manifold(...)      : dispatch; box-box by SAT+clipping, otherwise narrow_phase's
@@ -37,6 +38,7 @@ struct ContactManifold {
   ContactMethod method = ContactMethod::kNone;
 };
 
+ContactManifold box_box_manifold(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat);
 ContactManifold box_box_manifold(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                                  const BoxBoxSat& sat);
 ContactManifold convex_plane_manifold(const ConvexShape& a, const Pose& pose_a, const HalfSpace& plane);

@@ -1,0 +1,34 @@
+#pragma once
+// A box placed in the world with its axes as vectors: the form the box-box separating axis test
+// and the clipping manifold read, built once per part per body pair instead of turning the
+// quaternion into a matrix for every query.
+#include "talus/math/quat.h"
+#include "talus/math/vec3.h"
+#include "talus/shape/pose.h"
+
+namespace talus {
+
+struct OrientedBox {
+  Vec3 centre;   ///< (m)
+  Vec3 axis[3];  ///< unit box axes in the world (columns of the rotation matrix)
+  Vec3 half;     ///< half extents along axis[k] (m)
+};
+
+// Columns of the rotation matrix of q: the body axes in the world frame.
+inline void rotation_axes(const Quat& q, Vec3 axes[3]) {
+  const double xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z, xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z,
+               wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
+  axes[0] = {1 - 2 * (yy + zz), 2 * (xy + wz), 2 * (xz - wy)};
+  axes[1] = {2 * (xy - wz), 1 - 2 * (xx + zz), 2 * (yz + wx)};
+  axes[2] = {2 * (xz + wy), 2 * (yz - wx), 1 - 2 * (xx + yy)};
+}
+
+inline OrientedBox oriented_box(const Vec3& half, const Pose& pose) {
+  OrientedBox b;
+  b.centre = pose.position;
+  rotation_axes(pose.orientation, b.axis);
+  b.half = half;
+  return b;
+}
+
+}  // namespace talus
