@@ -82,7 +82,12 @@ def main() -> None:
         if len(wall_points):
             lo, hi = wall_points.min(axis=0), wall_points.max(axis=0)
             ax.set_xlim(lo[axes[0]], hi[axes[0]])
-            ax.set_ylim(lo[axes[1]], hi[axes[1]])
+            upper = hi[axes[1]]
+            if args.view == "side" and len(centres):
+                # Walls may reach far above the pile (a gate pulled out of the box): frame the particles.
+                top = float((centres[:, axes[1]] + radius).max())
+                upper = min(upper, lo[axes[1]] + 1.3 * (top - lo[axes[1]]))
+            ax.set_ylim(lo[axes[1]], upper)
     else:
         ax.autoscale_view()
     ax.set_aspect("equal")
