@@ -1,9 +1,10 @@
-// The talus command line: run, check and params.
+// The talus command line: run, check, params, render and plot, and the chute study tools.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "talus/contact/parameter_procedure.h"
@@ -54,6 +55,13 @@ int run_tool(const std::string& script, std::vector<std::string> args) {
   return 1;
 }
 
+// The running executable, handed to the study tools that launch runs of their own.
+std::string self_path() {
+  std::error_code ec;
+  const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("talus") : p.string();
+}
+
 int command_check(const std::string& path, const std::vector<std::string>& overrides) {
   io::ScenarioFile file = open_scenario(path, overrides);
   Scenario scenario = load_scenario(file);
@@ -94,6 +102,15 @@ int main(int argc, char** argv) {
   CLI::App* plot = app.add_subcommand("plot", "Plot a results folder's energies and speeds (DIR/energies.png)");
   plot->add_option("dir", path, "Results folder")->required();
 
+  // The chute study tools (Weinhart et al. 2012, Sects. 6, 8, 9): arguments go to the script.
+  CLI::App* hstop = app.add_subcommand("hstop", "h_stop search on a chute scenario (tools/chute_hstop.py: --lambda, --jobs, --out)");
+  CLI::App* sweep = app.add_subcommand("sweep", "Flow-state map over lambda, H, theta (tools/chute_sweep.py)");
+  CLI::App* fit = app.add_subcommand("fit", "Closure fits of a sweep / h_stop folder (tools/chute_fits.py)");
+  for (CLI::App* tool : {hstop, sweep, fit}) {
+    tool->allow_extras();
+    tool->prefix_command();
+  }
+
   CLI::App* params = app.add_subcommand("params", "Contact parameters from material targets");
   params->require_subcommand(1);
   double mass = 1, v_max = 1, delta_max = 0, e_n = 0.5, e_t = 0, kn = 0, gamma = 0, radius = 0;
@@ -121,7 +138,19 @@ int main(int argc, char** argv) {
   try {
     if (*run) return command_run(path, overrides, out, overwrite, quiet, threads);
     if (*check) return command_check(path, overrides);
-    if (*plot) return run_tool("plot_timeseries.py", {path});
+    if (*plot) {
+      // A chute study folder (a run with depth profiles, a sweep or an h_stop search) gets its figures too.
+      const std::filesystem::path dir(path);
+      for (const char* f : {"chute_profile.csv", "sweep_runs.csv", "hstop_runs.csv"})
+        if (std::filesystem::exists(dir / f)) return run_tool("plot_chute.py", {path});
+      return run_tool("plot_timeseries.py", {path});
+    }
+    if (*hstop || *sweep) {
+      std::vector<std::string> args = (*hstop ? hstop : sweep)->remaining();
+      args.insert(args.end(), {"--talus", self_path()});
+      return run_tool(*hstop ? "chute_hstop.py" : "chute_sweep.py", args);
+    }
+    if (*fit) return run_tool("chute_fits.py", fit->remaining());
     if (*render) {
       std::vector<std::string> args = {path, "--view", view};
       if (render_time >= 0) args.insert(args.end(), {"--time", std::to_string(render_time)});

@@ -5,7 +5,7 @@ packages=(
   build-essential cmake pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev
   libtomlplusplus-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
-  python3 python3-numpy python3-matplotlib
+  python3 python3-numpy python3-scipy python3-matplotlib
   python3-vtk9
 )
 missing=()
