@@ -55,7 +55,8 @@ def profiles(folder: Path):
     ax_s.plot(d["lithostatic_zz"], z, "k:", label=r"$\int_z \rho g\cos\theta$ (Eq. 41)")
     ax_s.set_xlabel("stress")
     ax_s.legend(fontsize=8)
-    ax_u.plot(d["velocity_x"], z, label="u")
+    dense = d["volume_fraction"] > 0.01  # the velocity of a few saltating grains means little
+    ax_u.plot(np.where(dense, d["velocity_x"], np.nan), z, label="u")
     if h and summary.get("mean_velocity"):
         zz = np.linspace(0, h, 100)
         ax_u.plot(5 / 3 * summary["mean_velocity"] * (1 - ((h - zz) / h) ** 1.5), zz, "k--", label="Bagnold (Eq. 54a)")

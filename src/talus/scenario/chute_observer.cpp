@@ -47,21 +47,7 @@ class ChuteObserver final : public RunObserver {
     const double half_step = 0.5 * world.settings().time_step;
     if (world.time() < next_snapshot_ - half_step || world.time() > c_.end + half_step) return;
     while (next_snapshot_ <= world.time() + half_step) next_snapshot_ += c_.interval;
-    const auto t0 = std::chrono::steady_clock::now();
-    const Snapshot snap = world.snapshot();
-    const CgGrid grid = CgGrid::depth(c_.z_min, c_.z_max, c_.points);
-    for (WidthAverage& w : widths_) w.average.add(coarse_grain(snap, grid, w.function));
-    // Downslope momentum of the flow, for the mean acceleration over the window.
-    double px = 0;
-    for (const ParticleRecord& p : snap.particles)
-      if (!p.fixed) px += p.mass * p.velocity.x;
-    if (widths_.front().average.count() == 1) {
-      first_time_ = snap.time;
-      first_px_ = px;
-    }
-    last_time_ = snap.time;
-    last_px_ = px;
-    cg_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    add_snapshot(world);
   }
 
   bool output(World& world, const Diagnostics& d) override {
@@ -91,11 +77,7 @@ class ChuteObserver final : public RunObserver {
     // A run that ended before its window (an arrested pile stopped early) is measured on its
     // final state, so the h_stop search still knows the pile's height h.
     if (!widths_.empty() && widths_.front().average.count() == 0) {
-      next_snapshot_ = world.time();
-      const double end = c_.end;
-      c_.end = world.time();
-      after_step(world);
-      c_.end = end;
+      add_snapshot(world);
       chute["final_state_only"] = true;
     }
     const int count = widths_.empty() ? 0 : widths_.front().average.count();
@@ -171,6 +153,25 @@ class ChuteObserver final : public RunObserver {
   }
 
  private:
+  // Coarse-grains the current state into every width's average (Eq. 43).
+  void add_snapshot(const World& world) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Snapshot snap = world.snapshot();
+    const CgGrid grid = CgGrid::depth(c_.z_min, c_.z_max, c_.points);
+    for (WidthAverage& w : widths_) w.average.add(coarse_grain(snap, grid, w.function));
+    // Downslope momentum of the flow, for the mean acceleration over the window.
+    double px = 0;
+    for (const ParticleRecord& p : snap.particles)
+      if (!p.fixed) px += p.mass * p.velocity.x;
+    if (widths_.front().average.count() == 1) {
+      first_time_ = snap.time;
+      first_px_ = px;
+    }
+    last_time_ = snap.time;
+    last_px_ = px;
+    cg_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
   ChuteStudyConfig c_;
   std::vector<WidthAverage> widths_;
   std::vector<EnergySample> energies_;

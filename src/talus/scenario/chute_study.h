@@ -20,7 +20,7 @@ struct ChuteStudyConfig {
   double end = 0;                   ///< sqrt(d/g), last snapshot (run end by default)
   double interval = 0;              ///< sqrt(d/g) between snapshots: t_c / 2 (Eq. 43)
   CgKernel kernel = CgKernel::gaussian;
-  double width = 0.25;              ///< d, w (Sect. 7 chooses 0.25)
+  double width = 0.25;              ///< d, Gaussian w (Sect. 7 chooses 0.25), or the Lucy cutoff c
   std::vector<double> extra_widths; ///< further widths, profiles written alongside (Fig. 6)
   double z_min = 0, z_max = 0;      ///< d, profile range
   int points = 0;                   ///< profile points
