@@ -1,4 +1,4 @@
-// The talus command line: run, resume, check, analyze, ensemble, sweep, render, plot and params.
+// The talus command line: run, resume, check, analyze, ensemble, sweep, render, plot, params and the chute study tools.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -229,6 +229,14 @@ int main(int argc, char** argv) {
   }
   ensemble->get_option("--seeds")->required();
   sweep->add_option("--grid", grid, "key=v1,v2,... (repeatable: the grid is their product)")->required();
+  // The chute study tools (Weinhart et al. 2012, Sects. 6, 8, 9): arguments go to the script.
+  CLI::App* hstop = app.add_subcommand("hstop", "h_stop search on a chute scenario (tools/chute_hstop.py: --lambda, --jobs, --out)");
+  CLI::App* flowmap = app.add_subcommand("flowmap", "Flow-state map over lambda, H, theta (tools/chute_sweep.py)");
+  CLI::App* fit = app.add_subcommand("fit", "Closure fits of a sweep / h_stop folder (tools/chute_fits.py)");
+  for (CLI::App* tool : {hstop, flowmap, fit}) {
+    tool->allow_extras();
+    tool->prefix_command();
+  }
 
   CLI::App* params = app.add_subcommand("params", "Contact parameters from material targets");
   params->require_subcommand(1);
@@ -258,8 +266,20 @@ int main(int argc, char** argv) {
     if (*run) return command_run(path, overrides, out, overwrite, quiet, threads, run_start);
     if (*resume) return command_resume(resume_dir, quiet, threads, run_start.checkpoint_interval);
     if (*check) return command_check(path, overrides);
+    if (*plot) {
+      // A chute study folder (a run with depth profiles, a sweep or an h_stop search) gets its figures too.
+      const std::filesystem::path dir(path);
+      for (const char* f : {"chute_profile.csv", "sweep_runs.csv", "hstop_runs.csv"})
+        if (std::filesystem::exists(dir / f)) return run_tool("plot_chute.py", {path});
+      return run_tool(plot_tool(path), {path});
+    }
+    if (*hstop || *flowmap) {
+      std::vector<std::string> args = (*hstop ? hstop : flowmap)->remaining();
+      args.insert(args.end(), {"--talus", self_path()});
+      return run_tool(*hstop ? "chute_hstop.py" : "chute_sweep.py", args);
+    }
+    if (*fit) return run_tool("chute_fits.py", fit->remaining());
     if (*analyze) return command_analyze(path, overrides);
-    if (*plot) return run_tool(plot_tool(path), {path});
     if (*ensemble || *sweep) {
       // Bad input stops here, with its file and line, rather than in every run's log.
       std::vector<std::string> first = overrides;

@@ -31,6 +31,10 @@
 //    2-thread figures competed with other jobs).
 //  - threads_identical: 1 if the positions after warm-up + timed steps on 1 and on 2 threads
 //    are bitwise identical.
+//  - cg_*_over_step: coarse graining one snapshot of the chute4k state (Weinhart et al. 2012,
+//    Sect. 3; Gaussian, w = 0.25 d) on a 1D depth grid of 200 points or a 3D grid of 40 x 20 x 40,
+//    divided by the cost of one time step, both on one thread; cg_snapshot_over_step is
+//    World::snapshot() alone, which the coarse graining needs first.
 #include <benchmark/benchmark.h>
 #include <omp.h>
 #include <sys/wait.h>
@@ -43,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "chute_cg_cost.h"
 #include "chute_state.h"
 #include "chute_timing.h"
 #include "cross_pile.h"
@@ -289,6 +294,14 @@ int main(int argc, char** argv) {
         metric("chute32k_peak_rss", static_cast<double>(p.peak_kib) / 1024.0, "MiB");
       }
       run_case(c, o);
+      if (c.name == "chute4k") {  // coarse graining of the H = 20 chute against its time step, one thread
+        const CgCost cg = time_chute_coarse_graining(c, cache_path(o.cache, c), o.quick ? 1 : 3);
+        metric("cg_snapshot_over_step", cg.snapshot_seconds / cg.step_seconds, "x");
+        metric("cg_1d_200_over_step", cg.cg_1d_seconds / cg.step_seconds, "x");
+        metric("cg_3d_40x20x40_over_step", cg.cg_3d_seconds / cg.step_seconds, "x");
+        metric("cg_1d_200_ms", 1e3 * cg.cg_1d_seconds, "ms");
+        metric("cg_3d_40x20x40_ms", 1e3 * cg.cg_3d_seconds, "ms");
+      }
     }
     return 0;
   } catch (const std::exception& e) {

@@ -6,7 +6,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libtomlplusplus-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libqhull-dev
   libhdf5-dev
-  python3 python3-numpy python3-matplotlib
+  python3 python3-numpy python3-scipy python3-matplotlib
   python3-vtk9
 )
 missing=()

@@ -7,6 +7,7 @@
 
 #include "talus/contact/parameter_procedure.h"
 #include "talus/scenario/chute.h"
+#include "talus/scenario/chute_study.h"
 #include "talus/scenario/contact_reader.h"
 #include "talus/scenario/dam_break.h"
 #include "talus/scenario/dam_break_observer.h"
@@ -416,6 +417,9 @@ Scenario load_scenario(ScenarioFile& f) {
     if (domain.periodic[a] && domain.length(a) < 2 * (2.3 * r_max))
       f.fail(chute ? "chute" : "domain.hi", "periodic box narrower than two particle diameters plus skin");
 
+  if (chute)
+    sc.observers.push_back(make_chute_observer(read_chute_study(f, tc_min, run.end_time, chute_setup.fill_height,
+                                                                chute_setup.base_diameter, chute_setup.density)));
   f.check_no_unknown_keys();
   for (const auto& s : species) sc.species.push_back(s.name);
   sc.wall_materials = materials;

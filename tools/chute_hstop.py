@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""The h_stop search of Weinhart et al. 2012, Sect. 6, for one or more base roughnesses lambda.
+
+From H = H0 and theta = theta0 the angle rises by 1 deg until the layer flows; from then on the
+height rises by 2 if the flow arrested, else the angle falls by 0.5 deg. A case is arrested when
+E_kin/E_ela < 1e-5 within 500 time units (run.end_time = 500, stop_when_arrested). Each case runs
+on one thread; with --jobs N, N cases run at once: the staircases of several lambdas side by side,
+and free slots run the possible next cases of a staircase ahead of its result (the one not
+needed is stopped). Writes DIR/hstop_runs.csv (every case) and DIR/hstop_intervals.csv (for each
+height the angle interval, for each angle the height interval, where arrested turns to flowing).
+
+usage: chute_hstop.py SCENARIO --talus BIN [--lambda 1,0.5] [--jobs 2] [--out DIR] [--h0 4]
+       [--theta0 21] [--h-max 40] [--set KEY=VALUE ...]
+"""
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import chute_runs  # noqa: E402
+
+
+class Staircase:
+    """One lambda's search: `case` is the one whose result is needed next."""
+
+    def __init__(self, lam, h0, theta0, h_max, theta_min, max_cases):
+        self.lam, self.h_max, self.theta_min, self.max_cases = lam, h_max, theta_min, max_cases
+        self.case = (lam, h0, theta0)
+        self.rising = True  # still raising the angle until the first flow
+        self.visited = []
+
+    def successors(self, case=None):
+        """(next if arrested, next if flowing) after `case`."""
+        lam, H, th = case or self.case
+        if self.rising:
+            return (lam, H, th + 1.0), (lam, H, th - 0.5)
+        return (lam, H + 2, th), (lam, H, th - 0.5)
+
+    def advance(self, arrested):
+        self.visited.append((self.case, arrested))
+        on_arrest, on_flow = self.successors()
+        if not arrested:
+            self.rising = False
+        self.case = on_arrest if arrested else on_flow
+        lam, H, th = self.case
+        if H > self.h_max or th < self.theta_min or th > 60 or len(self.visited) >= self.max_cases:
+            self.case = None
+
+
+def intervals(rows):
+    """Angle intervals per (lambda, H) and height intervals per (lambda, theta) between the
+    largest arrested and smallest flowing value; heights h measured from sigma_zz (Eq. 42)."""
+    out = []
+    by = {}
+    for r in rows:
+        by.setdefault((r["lambda"], r["H"]), []).append(r)
+    for (lam, H), rs in sorted(by.items()):
+        arr = [r for r in rs if r["arrested"]]
+        flo = [r for r in rs if not r["arrested"]]
+        if arr and flo:
+            a = max(arr, key=lambda r: r["angle"])
+            f = min(flo, key=lambda r: r["angle"])
+            if a["angle"] < f["angle"]:
+                hs = [x["h"] for x in (a, f) if x["h"] not in (None, "")]
+                out.append({"lambda": lam, "kind": "angle", "H": H, "h": sum(hs) / len(hs) if hs else "",
+                            "angle_lo": a["angle"], "angle_hi": f["angle"], "h_lo": "", "h_hi": ""})
+    by = {}
+    for r in rows:
+        by.setdefault((r["lambda"], r["angle"]), []).append(r)
+    for (lam, th), rs in sorted(by.items()):
+        arr = [r for r in rs if r["arrested"]]
+        flo = [r for r in rs if not r["arrested"]]
+        if arr and flo:
+            a = max(arr, key=lambda r: r["H"])
+            f = min(flo, key=lambda r: r["H"])
+            if a["H"] < f["H"]:
+                out.append({"lambda": lam, "kind": "height", "H": "", "h": "", "angle_lo": th, "angle_hi": th,
+                            "h_lo": a["h"] if a["h"] is not None else "", "h_hi": f["h"] if f["h"] is not None else ""})
+    return out
+
+
+def write_intervals(path, rows):
+    import csv
+    cols = ["lambda", "kind", "H", "h", "angle_lo", "angle_hi", "h_lo", "h_hi"]
+    tmp = path + ".tmp"
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=cols)
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(tmp, path)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("scenario")
+    ap.add_argument("--talus", required=True, help="the talus executable")
+    ap.add_argument("--lambda", dest="lambdas", default="1", help="comma-separated base diameters")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--out", default="results/hstop")
+    ap.add_argument("--h0", type=float, default=4)
+    ap.add_argument("--theta0", type=float, default=21)
+    ap.add_argument("--h-max", type=float, default=40)
+    ap.add_argument("--theta-min", type=float, default=10)
+    ap.add_argument("--max-cases", type=int, default=60)
+    ap.add_argument("--end-time", type=float, default=500, help="Sect. 6: arrest within 500 time units")
+    ap.add_argument("--set", dest="overrides", action="append", default=[], help="extra scenario override")
+    a = ap.parse_args(argv)
+
+    # The arrest test of Sect. 6, and the flow height h from a short average at the end.
+    overrides = ["run.end_time=%r" % a.end_time, "chute.flow_state.stop_when_arrested=true",
+                 "chute.flow_state.arrest_time=%r" % a.end_time,
+                 "chute.coarse_graining.start=%r" % max(0.0, a.end_time - 20), "chute.coarse_graining.interval=0.1",
+                 "chute.coarse_graining.extra_widths=[]"] + a.overrides
+    runner = chute_runs.Runner(a.talus, a.scenario, a.out, a.jobs, overrides)
+    stairs = [Staircase(float(x), a.h0, a.theta0, a.h_max, a.theta_min, a.max_cases) for x in a.lambdas.split(",")]
+    rows = []
+
+    def record(case):
+        s = runner.done[case]
+        rows.append(chute_runs.row_of(case, s, runner.folder(case)))
+        chute_runs.write_rows(os.path.join(a.out, "hstop_runs.csv"), rows)
+
+    recorded = set()
+    while any(st.case for st in stairs):
+        # Advance every staircase whose case is known.
+        progressed = True
+        while progressed:
+            progressed = False
+            for st in stairs:
+                if st.case and runner.cached(st.case) is not None:
+                    if st.case not in recorded:
+                        record(st.case)
+                        recorded.add(st.case)
+                    st.advance(chute_runs.is_arrested(runner.done[st.case]))
+                    progressed = True
+        active = [st for st in stairs if st.case]
+        if not active:
+            break
+        needed = [st.case for st in active]
+        useful = set(needed)
+        for st in active:
+            useful.update(st.successors())
+        for case in list(runner.running):
+            if case not in useful:
+                runner.cancel(case)
+        for case in needed:
+            if runner.free() > 0:
+                runner.start(case)
+        for st in active:  # speculate: the flowing branch first (the staircase's usual step)
+            for case in reversed(st.successors()):
+                if runner.free() > 0 and runner.cached(case) is None:
+                    runner.start(case)
+        if runner.running:
+            runner.wait_any()
+    write_intervals(os.path.join(a.out, "hstop_intervals.csv"), intervals(rows))
+    print("h_stop search: %d cases; %s/hstop_runs.csv, %s/hstop_intervals.csv" % (len(rows), a.out, a.out))
+
+
+if __name__ == "__main__":
+    main()

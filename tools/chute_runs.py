@@ -1,0 +1,118 @@
+"""Runs chute cases with `talus run` (one OpenMP thread each, `jobs` at a time) and reads their
+summary.json: the engine of the h_stop search and the flow-state sweep (Weinhart et al. 2012,
+Sects. 6 and 8). A case is (lambda, H, theta); its results folder is reused when it already
+holds a summary, so an interrupted search resumes where it stopped."""
+import csv
+import json
+import os
+import subprocess
+import time
+
+COLUMNS = ["lambda", "H", "angle", "flow_state", "arrested", "stop_reason", "final_time", "h", "base", "surface",
+           "mean_velocity", "froude", "mu_macro", "K", "alpha", "volume_fraction", "bulk_volume_fraction",
+           "arrest_time", "wall_time", "dir"]
+
+
+def case_name(lam, H, angle):
+    return "lambda%g_H%g_theta%g" % (lam, H, angle)
+
+
+def is_arrested(summary):
+    return summary.get("stop_reason") == "arrested" or summary.get("flow_state") == "arrested"
+
+
+def row_of(case, summary, folder):
+    lam, H, angle = case
+    chute = summary.get("chute", {})
+    row = {"lambda": lam, "H": H, "angle": angle, "flow_state": summary.get("flow_state"),
+           "arrested": int(is_arrested(summary)), "stop_reason": summary.get("stop_reason"),
+           "final_time": summary.get("final_time"), "arrest_time": chute.get("arrest_time"),
+           "wall_time": summary.get("wall_time"), "dir": folder}
+    for k in ["h", "base", "surface", "mean_velocity", "froude", "mu_macro", "K", "alpha", "volume_fraction",
+              "bulk_volume_fraction"]:
+        row[k] = summary.get(k)
+    return row
+
+
+class Runner:
+    """Starts `talus run` processes, at most `jobs` at once, and reports finished cases."""
+
+    def __init__(self, talus, scenario, out, jobs, overrides, quiet=False):
+        self.talus, self.scenario, self.out, self.jobs = talus, scenario, out, jobs
+        self.overrides, self.quiet = list(overrides), quiet
+        self.running = {}  # case -> (Popen, folder, start time)
+        self.done = {}     # case -> summary
+        os.makedirs(out, exist_ok=True)
+
+    def folder(self, case):
+        return os.path.join(self.out, case_name(*case))
+
+    def cached(self, case):
+        path = os.path.join(self.folder(case), "summary.json")
+        if case not in self.done and os.path.exists(path):
+            with open(path) as f:
+                s = json.load(f)
+            if s.get("stop_reason") != "interrupted":
+                self.done[case] = s
+        return self.done.get(case)
+
+    def free(self):
+        return self.jobs - len(self.running)
+
+    def start(self, case):
+        if case in self.running or self.cached(case) is not None:
+            return
+        lam, H, angle = case
+        cmd = [self.talus, "run", self.scenario, "--out", self.folder(case), "--overwrite", "--quiet",
+               "--threads", "1", "--set", "chute.base_diameter=%r" % float(lam),
+               "--set", "chute.fill_height=%r" % float(H), "--set", "chute.angle=%r" % float(angle)]
+        for o in self.overrides:
+            cmd += ["--set", o]
+        log = open(self.folder(case) + ".log", "w")
+        self.running[case] = (subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT), self.folder(case), time.time())
+        if not self.quiet:
+            print("start  %s" % case_name(*case), flush=True)
+
+    def cancel(self, case):
+        proc = self.running.pop(case)[0]
+        proc.terminate()
+        proc.wait()
+        if not self.quiet:
+            print("cancel %s (speculative, not needed)" % case_name(*case), flush=True)
+
+    def wait_any(self):
+        """Blocks until some running case ends; returns it (its summary is in self.done)."""
+        while True:
+            for case, (proc, folder, t0) in list(self.running.items()):
+                if proc.poll() is not None:
+                    del self.running[case]
+                    if proc.returncode != 0:
+                        raise RuntimeError("talus run failed for %s (see %s.log)" % (case_name(*case), folder))
+                    s = self.cached(case)
+                    if not self.quiet:
+                        print("done   %s: %s, h = %s (%.0f s)" % (case_name(*case), s.get("flow_state"), s.get("h"),
+                                                                 time.time() - t0), flush=True)
+                    return case
+            time.sleep(0.5)
+
+
+def write_rows(path, rows):
+    tmp = path + ".tmp"
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=COLUMNS)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: ("" if r.get(k) is None else r.get(k)) for k in COLUMNS})
+    os.replace(tmp, path)
+
+
+def read_rows(path):
+    rows = []
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            for k in COLUMNS:
+                if k in ("flow_state", "stop_reason", "dir"):
+                    continue
+                r[k] = float(r[k]) if r.get(k) not in (None, "") else None
+            rows.append(r)
+    return rows
