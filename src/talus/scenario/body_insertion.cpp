@@ -6,16 +6,11 @@
 #include <string>
 
 #include "talus/collide/convex_contact.h"
+#include "talus/math/random_orientation.h"
 
 namespace talus {
 
 namespace {
-
-Quat uniform_orientation(std::mt19937_64& rng) {
-  // A normalised 4D Gaussian is uniform on SO(3).
-  std::normal_distribution<double> g(0, 1);
-  return Quat{g(rng), g(rng), g(rng), g(rng)}.normalized();
-}
 
 // The parts of a body in the world; a sphere is one part.
 std::vector<std::pair<ConvexShape, Pose>> world_parts(const PlacedBody& b) {
@@ -93,7 +88,7 @@ std::vector<PlacedBody> insert_bodies_growing(BodyOverlapIndex& index, const Pla
   std::size_t misfits = 0;
   while (placed.size() < count) {
     PlacedBody b = prototype;
-    b.orientation = prototype.shape ? uniform_orientation(rng) : Quat{};
+    b.orientation = prototype.shape ? random_orientation(rng) : Quat{};
     b.position = {lo.x + size.x * unit(rng), lo.y + size.y * unit(rng), lo.z + top * unit(rng)};
     const Aabb box = body_aabb(b);
     const bool fits = box.lo.x >= lo.x && box.hi.x <= lo.x + size.x && box.lo.y >= lo.y &&

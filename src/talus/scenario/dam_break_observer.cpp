@@ -63,6 +63,16 @@ std::vector<collapse::Footprint> particle_footprints(const Snapshot& snapshot,
   return out;
 }
 
+collapse::CollapseSetup DamBreakObserver::collapse_setup() const {
+  collapse::CollapseSetup cs;
+  cs.initial_length = setup_.gate_position;
+  cs.box_length = setup_.box_length;
+  cs.width = setup_.width;
+  cs.particle_size = particle_size();
+  cs.pixel = setup_.pixel;
+  return cs;
+}
+
 double DamBreakObserver::particle_size() const {
   double r = 0;
   for (const ParticleRecord& p : initial_.particles)
@@ -101,12 +111,7 @@ void DamBreakObserver::open_gate(World& world, const Diagnostics& d, bool static
   initial_ = world.snapshot();
   gate_time_ = world.time();
   const std::vector<collapse::Footprint> prints = particle_footprints(initial_, templates_);
-  collapse::CollapseSetup cs;
-  cs.initial_length = setup_.gate_position;
-  cs.box_length = setup_.box_length;
-  cs.width = setup_.width;
-  cs.particle_size = particle_size();
-  cs.pixel = setup_.pixel;
+  const collapse::CollapseSetup cs = collapse_setup();
   const collapse::CollapseMeasures m = collapse::measure_collapse(initial_, prints, initial_, prints, cs);
   initial_height_ = m.initial_height.mean;
 
@@ -170,12 +175,7 @@ void DamBreakObserver::finish(World& world, const std::filesystem::path& out, nl
 void DamBreakObserver::measure(const Snapshot& final, double final_time, const std::filesystem::path& out,
                                nlohmann::json& summary) {
   json& db = summary["dam_break"];
-  collapse::CollapseSetup cs;
-  cs.initial_length = setup_.gate_position;
-  cs.box_length = setup_.box_length;
-  cs.width = setup_.width;
-  cs.particle_size = particle_size();
-  cs.pixel = setup_.pixel;
+  const collapse::CollapseSetup cs = collapse_setup();
   const collapse::CollapseMeasures m =
       collapse::measure_collapse(initial_, particle_footprints(initial_, templates_), final,
                                  particle_footprints(final, templates_), cs);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "talus/analysis/collapse_footprint.h"
+#include "talus/analysis/collapse_summary.h"
 #include "talus/analysis/snapshot.h"
 #include "talus/scenario/dam_break.h"
 #include "talus/scenario/run_observer.h"
@@ -32,6 +33,7 @@ class DamBreakObserver : public RunObserver {
   enum class Phase { settling, collapsing, over };
   void open_gate(World& world, const Diagnostics& d, bool static_reached);
   double particle_size() const;
+  collapse::CollapseSetup collapse_setup() const;
   // The end-of-run measurements of a final state, into summary.json and the profile files.
   void measure(const Snapshot& final, double final_time, const std::filesystem::path& out, nlohmann::json& summary);
 

@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "talus/math/random_orientation.h"
 #include "talus/scenario/insertion.h"
 
 namespace talus {
@@ -37,8 +38,7 @@ std::size_t Pouring::pour_due(World& world) {
     ParticleInit init;
     if (spec_.rigid) {
       init = spec_.prototype;
-      std::normal_distribution<double> g(0, 1);
-      init.orientation = Quat{g(rng_), g(rng_), g(rng_), g(rng_)}.normalized();  // uniform on SO(3)
+      init.orientation = random_orientation(rng_);
     } else {
       init.radius = r;
       init.mass = spec_.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "talus/contact/parameter_procedure.h"
+#include "talus/math/random_orientation.h"
 #include "talus/scenario/chute.h"
 #include "talus/scenario/chute_study.h"
 #include "talus/scenario/contact_reader.h"
@@ -71,12 +72,6 @@ void read_shape(const ScenarioFile& f, const std::string& key, SpeciesInfo& s) {
   }
   s.body = make_rigid_body_type(c, s.density);
   s.radius = s.body->radius;
-}
-
-Quat random_orientation(std::mt19937_64& rng) {
-  // Uniform on SO(3): a normalised 4D Gaussian.
-  std::normal_distribution<double> g(0, 1);
-  return Quat{g(rng), g(rng), g(rng), g(rng)}.normalized();
 }
 
 std::string indexed(const std::string& array, std::size_t k) { return array + "[" + std::to_string(k) + "]"; }
