@@ -6,6 +6,8 @@
 //   bounding_capsule(geometry) : box -> segment along its longest side, radius = half-diagonal
 //                                of the cross-section; cylinder -> its axis; otherwise a ball.
 //   capsules_apart(...)         : true when two world capsules cannot touch (segment distance).
+#include <algorithm>
+
 #include "talus/math/vec3.h"
 
 namespace talus {
@@ -21,6 +23,27 @@ BoundingCapsule bounding_capsule(const ConvexShape& shape);
 
 // Capsules centred at ca and cb with world half-axes ua, ub: true if the segments are at least
 // ra + rb apart (Ericson, Real-Time Collision Detection, Sec. 5.1.9, closest points of segments).
-bool capsules_apart(const Vec3& ca, const Vec3& ua, double ra, const Vec3& cb, const Vec3& ub, double rb);
+// Inline: the pair loop of rigid bodies runs it for every pair of parts.
+inline bool capsules_apart(const Vec3& ca, const Vec3& ua, double ra, const Vec3& cb, const Vec3& ub, double rb) {
+  // Segments ca + s ua and cb + t ub, s, t in [-1, 1]; minimise |r + s ua - t ub|, r = ca - cb.
+  const Vec3 r = ca - cb;
+  const double a = norm2(ua), e = norm2(ub), b = dot(ua, ub), c = dot(ua, r), f = dot(ub, r);
+  const double denom = a * e - b * b;
+  double s = 0, t = 0;
+  if (a > 0 && e > 0) {
+    s = denom > 1e-12 * a * e ? std::clamp((b * f - c * e) / denom, -1.0, 1.0) : 0.0;
+    t = (b * s + f) / e;
+    if (t < -1 || t > 1) {
+      t = std::clamp(t, -1.0, 1.0);
+      s = std::clamp((b * t - c) / a, -1.0, 1.0);
+    }
+  } else if (a > 0) {
+    s = std::clamp(-c / a, -1.0, 1.0);
+  } else if (e > 0) {
+    t = std::clamp(f / e, -1.0, 1.0);
+  }
+  const double reach = ra + rb;
+  return norm2(r + ua * s - ub * t) >= reach * reach;
+}
 
 }  // namespace talus

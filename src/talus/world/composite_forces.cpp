@@ -10,7 +10,6 @@
 #include <x86intrin.h>
 
 #include <cmath>
-#include <new>
 #include <type_traits>
 #include <variant>
 
@@ -19,6 +18,10 @@
 #include "talus/collide/convex_contact_analytic.h"
 #include "talus/collide/manifold.h"
 #include "talus/world/composite_stats.h"
+#include "talus/world/memory_ref.h"
+#include "talus/world/parallel.h"
+#include "talus/world/placed_bodies.h"
+#include "talus/world/sphere_contact.h"
 #include "talus/world/world.h"
 
 namespace talus {
@@ -33,37 +36,6 @@ const CompositeShape& shape_of(const std::vector<CompositeShape>& shapes, int in
   scratch.bounding_radius = 0;
   scratch.add(make_sphere(radius), Pose{});
   return scratch;
-}
-
-// A part placed in the world for one body pair.
-struct PlacedPart {
-  Pose pose;
-  OrientedBox box;      ///< axes always set; centre and half extents too when the part is a box
-  Vec3 capsule_axis;    ///< world half-axis of the culling capsule (m)
-  double capsule_radius = 0;
-  bool is_box = false;
-};
-
-// Storage for a PlacedPart constructed only when needed (no zeroing of unused slots).
-union PlacedSlot {
-  PlacedPart part;
-  PlacedSlot() {}
-};
-static_assert(std::is_trivially_destructible_v<PlacedPart>);
-
-PlacedPart place(const CompositePart& part, const Pose& body) {
-  PlacedPart p;
-  p.pose = body * part.pose;
-  rotation_axes(p.pose.orientation, p.box.axis);
-  p.box.centre = p.pose.position;
-  const Vec3 c = part.capsule.half_axis;
-  p.capsule_axis = p.box.axis[0] * c.x + p.box.axis[1] * c.y + p.box.axis[2] * c.z;
-  p.capsule_radius = part.capsule.radius;
-  if (const Box* b = std::get_if<Box>(&part.shape.geometry)) {
-    p.box.half = b->half_extents;
-    p.is_box = true;
-  }
-  return p;
 }
 
 struct PointGeometry {
@@ -160,26 +132,12 @@ void apply_point(const PointGeometry& pg, double share, const ContactParams& par
   total.normal_force += r.normal_force;
 }
 
-// A body's rotation as its three axes in the world (columns of the rotation matrix).
-struct BodyFrame {
-  Vec3 position;
-  Vec3 axis[3];
-  Vec3 to_world(const Vec3& v) const { return axis[0] * v.x + axis[1] * v.y + axis[2] * v.z; }
-};
-
-BodyFrame body_frame(const Vec3& x, const Quat& q) {
-  BodyFrame f;
-  f.position = x;
-  rotation_axes(q, f.axis);
-  return f;
-}
-
 // Body-level cull: the 6 face axes of the two bodies' part-bounding boxes (Gottschalk et al.
 // 1996). A separating face axis proves no part pair can touch.
-bool body_boxes_apart(const CompositeShape& si, const BodyFrame& fi, const CompositeShape& sj, const BodyFrame& fj) {
-  const Vec3* A = fi.axis;
-  const Vec3* B = fj.axis;
-  const Vec3 d = fj.position + fj.to_world(sj.box_centre) - fi.position - fi.to_world(si.box_centre);
+bool body_boxes_apart(const CompositeShape& si, const BodyFrame& bi, const CompositeShape& sj, const BodyFrame& bj) {
+  const Vec3* A = bi.axis;
+  const Vec3* B = bj.axis;
+  const Vec3 d = bj.box_centre - bi.box_centre;
   const Vec3& ha = si.box_half;
   const Vec3& hb = sj.box_half;
   double absR[3][3];
@@ -192,19 +150,10 @@ bool body_boxes_apart(const CompositeShape& si, const BodyFrame& fi, const Compo
   return false;
 }
 
-// A part's culling capsule in the world: centre and half-axis (the radius is the part's).
-struct WorldCapsule {
-  Vec3 centre, half_axis;
-};
-
-WorldCapsule world_capsule(const CompositePart& part, const BodyFrame& f) {
-  return {f.position + f.to_world(part.pose.position), f.to_world(part.pose.orientation.rotate(part.capsule.half_axis))};
-}
-
 // Last step's list, moved aside while this step's is written (per thread, reused).
 SubContactList& previous_scratch(const SubContactList& contacts) {
   thread_local SubContactList previous;
-  previous.assign(contacts.begin(), contacts.end());
+  if (!contacts.empty() || !previous.empty()) previous.assign(contacts.begin(), contacts.end());
   return previous;
 }
 
@@ -221,10 +170,15 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   thread_local CompositeShape scratch_i, scratch_j;
   const CompositeShape& si = shape_of(shapes_, p.shape[i], p.radius[i], scratch_i);
   const CompositeShape& sj = shape_of(shapes_, p.shape[j], p.radius[j], scratch_j);
-  const BodyFrame frame_i = body_frame(p.position[i], p.orientation[i]);
-  const BodyFrame frame_j = body_frame(p.position[j], p.orientation[j]);
-  if (body_boxes_apart(si, frame_i, sj, frame_j)) {
-    contacts.clear();
+  // A sphere has no box and no entry in the placement cache: one part at its centre.
+  PlacedPart sphere_i, sphere_j;
+  const bool has_box_i = p.shape[i] != 0, has_box_j = p.shape[j] != 0;
+  if (!has_box_i) sphere_i = place_part(si.parts[0], {p.position[i], p.orientation[i]});
+  if (!has_box_j) sphere_j = place_part(sj.parts[0], {p.position[j], p.orientation[j]});
+  const PlacedPart* placed_i = has_box_i ? placed_.parts(i) : &sphere_i;
+  const PlacedPart* placed_j = has_box_j ? placed_.parts(j) : &sphere_j;
+  if (has_box_i && has_box_j && body_boxes_apart(si, placed_.body(i), sj, placed_.body(j))) {
+    if (!contacts.empty()) contacts.clear();
     if (profile) {
       CompositeStats& st = composite_stats_slot();
       ++st.body_pairs;
@@ -232,60 +186,32 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
     }
     return {};
   }
-  const Pose body_i{p.position[i], p.orientation[i]}, body_j{p.position[j], p.orientation[j]};
   const ContactParams& params = table_.pair(p.species[i], p.species[j]);
   const double reduced_mass = 1.0 / (p.inv_mass[i] + p.inv_mass[j]);
   const double reduced_radius = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
   const ContactMotion motion{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
+  const bool had_contacts = !contacts.empty();
   const SubContactList& previous = previous_scratch(contacts);
   contacts.clear();
 
-  // Capsules of every part first; a part is placed (pose, box axes) only when one of its pairs
-  // survives the capsule cull. Composites of up to 4 parts on the stack.
-  constexpr std::size_t kMaxParts = 4;
-  const std::size_t ni = si.parts.size(), nj = sj.parts.size();
-  thread_local std::vector<WorldCapsule> overflow_ci, overflow_cj;
-  thread_local std::vector<PlacedSlot> overflow_i, overflow_j;
-  thread_local std::vector<char> overflow_pi, overflow_pj;
-  WorldCapsule stack_ci[kMaxParts], stack_cj[kMaxParts];
-  PlacedSlot stack_i[kMaxParts], stack_j[kMaxParts];
-  char stack_pi[kMaxParts] = {}, stack_pj[kMaxParts] = {};
-  WorldCapsule* cap_i = stack_ci;
-  WorldCapsule* cap_j = stack_cj;
-  PlacedSlot* placed_i = stack_i;
-  PlacedSlot* placed_j = stack_j;
-  char* is_placed_i = stack_pi;
-  char* is_placed_j = stack_pj;
-  if (ni > kMaxParts) {
-    overflow_ci.resize(ni), overflow_i.resize(ni), overflow_pi.assign(ni, 0);
-    cap_i = overflow_ci.data(), placed_i = overflow_i.data(), is_placed_i = overflow_pi.data();
-  }
-  if (nj > kMaxParts) {
-    overflow_cj.resize(nj), overflow_j.resize(nj), overflow_pj.assign(nj, 0);
-    cap_j = overflow_cj.data(), placed_j = overflow_j.data(), is_placed_j = overflow_pj.data();
-  }
-  for (std::size_t a = 0; a < ni; ++a) cap_i[a] = world_capsule(si.parts[a], frame_i);
-  for (std::size_t b = 0; b < nj; ++b) cap_j[b] = world_capsule(sj.parts[b], frame_j);
-
   ContactResult total;
   std::uint64_t t0 = ticks(profile);
+  const std::size_t ni = si.parts.size(), nj = sj.parts.size();
   for (std::size_t a = 0; a < ni; ++a) {
+    const PlacedPart& pa = placed_i[a];
     for (std::size_t b = 0; b < nj; ++b) {
+      const PlacedPart& pb = placed_j[b];
       ++n_parts;
-      if (capsules_apart(cap_i[a].centre, cap_i[a].half_axis, si.parts[a].capsule.radius, cap_j[b].centre,
-                         cap_j[b].half_axis, sj.parts[b].capsule.radius))
+      if (capsules_apart(pa.pose.position, pa.capsule_axis, pa.capsule_radius, pb.pose.position, pb.capsule_axis,
+                         pb.capsule_radius))
         continue;
       ++n_narrow;
-      if (!is_placed_i[a]) new (&placed_i[a].part) PlacedPart(place(si.parts[a], body_i)), is_placed_i[a] = 1;
-      if (!is_placed_j[b]) new (&placed_j[b].part) PlacedPart(place(sj.parts[b], body_j)), is_placed_j[b] = 1;
-      const PlacedPart& pa = placed_i[a].part;
-      const PlacedPart& pb = placed_j[b].part;
       const std::uint64_t t1 = ticks(profile);
       t_cull += t1 - t0;
       const auto part_a = static_cast<std::uint16_t>(a), part_b = static_cast<std::uint16_t>(b);
       PointGeometry points[4];
       const int n = part_points(si.parts[a].shape, pa, sj.parts[b].shape, pb, settings_.contact_manifold,
-                                find_part_pair(previous, part_a, part_b), points);
+                                had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, points);
       const std::uint64_t t2 = ticks(profile);
       t_narrow += t2 - t1;
       for (int k = 0; k < n; ++k) {
@@ -293,7 +219,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
         s.part_i = part_a;
         s.part_j = part_b;
         s.feature = points[k].feature;
-        if (const SubContact* old = find_previous(previous, s)) {
+        if (const SubContact* old = had_contacts ? find_previous(previous, s) : nullptr) {
           s.spring = old->spring;
           s.normal_prev = old->normal_prev;
         }
@@ -328,15 +254,15 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
   const ParticleStore& p = particles_;
   thread_local CompositeShape scratch;
   const CompositeShape& si = shape_of(shapes_, p.shape[i], p.radius[i], scratch);
-  const Pose body{p.position[i], p.orientation[i]};
   const ContactParams& params = table_.wall(p.species[i], wall.material);
   const HalfSpace plane{wall.normal, dot(wall.normal, origin)};  // solid behind the wall, normal into the free side
   const ContactMotion motion{p.velocity[i], p.angular_velocity[i], wall_velocity, Vec3{}};
   const SubContactList& previous = previous_scratch(contacts);
   contacts.clear();
   ContactResult total;
+  const PlacedPart* placed = placed_.parts(i);
   for (std::size_t a = 0; a < si.parts.size(); ++a) {
-    const Pose pa = body * si.parts[a].pose;
+    const Pose& pa = placed[a].pose;
     // The part's bounding sphere clears the plane: no corner can touch it.
     if (dot(pa.position, plane.normal) - plane.offset >= si.parts[a].shape.bounding_radius) continue;
     PointGeometry points[4];
@@ -366,9 +292,65 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
   return total;
 }
 
+// Pairs of rigid bodies cost a culling stage and a narrow phase each, and a pile rarely spans
+// enough slabs for the colouring of pair_forces to keep two threads busy. So rows are taken in
+// blocks, any block by any thread, each block recording what it adds to which body; the
+// records are then applied block by block, in the same order on any number of threads.
+template <TangentialModel Model>
+void World::composite_pair_forces(double memory_dt) {
+  ScopedPhase phase(timer_, Phase::pair_forces);
+  ParticleStore& p = particles_;
+  PairList& list = pairs_;
+  ContactMemory& mem = list.memory;
+  constexpr long kRowsPerBlock = 16;
+  const long rows = static_cast<long>(list.rows());
+  const long blocks = (rows + kRowsPerBlock - 1) / kRowsPerBlock;
+  if (block_loads_.size() < static_cast<std::size_t>(blocks)) block_loads_.resize(blocks);
+#pragma omp parallel for schedule(dynamic, 1) if (worth_parallel(16 * p.owned))
+  for (long block = 0; block < blocks; ++block) {
+    std::vector<BodyLoad>& loads = block_loads_[block];
+    loads.clear();
+    const long last = std::min(rows, (block + 1) * kRowsPerBlock);
+    for (long row = block * kRowsPerBlock; row < last; ++row) {
+      const auto i = static_cast<std::uint32_t>(row);
+      Vec3 fi, ti;
+      for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
+        const std::uint32_t j = list.neighbor(e);
+        const Vec3 d = p.position[i] - p.position[j];
+        const double reach = p.radius[i] + p.radius[j];
+        const double dist2 = norm2(d);
+        if (dist2 >= reach * reach) {  // bounding spheres apart: a later contact starts afresh
+          if (!pair_sub_[e].empty()) pair_sub_[e].clear();
+          if (mem.active(e)) mem.clear(e);
+          continue;
+        }
+        ContactResult r;
+        if (p.shape[i] != 0 || p.shape[j] != 0) {
+          r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt);
+          if (pair_sub_[e].empty()) continue;
+        } else {
+          const ContactMotion m{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
+          r = sphere_contact<Model>(d, dist2, p.radius[i], p.radius[j], m, table_.pair(p.species[i], p.species[j]),
+                                    1.0 / (p.inv_mass[i] + p.inv_mass[j]), memory_dt, memory_ref(mem, e));
+        }
+        fi += r.force_on_i;
+        ti += r.torque_i;
+        loads.push_back({j, -r.force_on_i, r.torque_j});
+      }
+      if (fi != Vec3{} || ti != Vec3{}) loads.push_back({i, fi, ti});
+    }
+  }
+  for (long block = 0; block < blocks; ++block)
+    for (const BodyLoad& l : block_loads_[block]) {
+      p.force[l.body] += l.force;
+      p.torque[l.body] += l.torque;
+    }
+}
+
 #define TALUS_INSTANTIATE(M)                                                                                  \
   template ContactResult World::composite_pair<M>(std::size_t, std::size_t, SubContactList&, double);        \
-  template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&, SubContactList&, double);
+  template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&, SubContactList&, double); \
+  template void World::composite_pair_forces<M>(double);
 TALUS_INSTANTIATE(TangentialModel::memory)
 TALUS_INSTANTIATE(TangentialModel::elastic_spring)
 TALUS_INSTANTIATE(TangentialModel::memoryless)

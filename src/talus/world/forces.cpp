@@ -5,6 +5,7 @@
 
 #include "talus/world/memory_ref.h"
 #include "talus/world/parallel.h"
+#include "talus/world/sphere_contact.h"
 #include "talus/world/world.h"
 
 namespace talus {
@@ -13,7 +14,12 @@ namespace talus {
 // particle anyway); this pass only adds.
 void World::compute_forces(double memory_dt) {
   ParticleStore& p = particles_;
-  with_tangential_model(settings_.tangential_model, [&](auto model) { pair_forces<model.value>(memory_dt); });
+  if (has_composites()) {
+    placed_.place(p, shapes_);
+    with_tangential_model(settings_.tangential_model, [&](auto model) { composite_pair_forces<model.value>(memory_dt); });
+  } else {
+    with_tangential_model(settings_.tangential_model, [&](auto model) { pair_forces<model.value>(memory_dt); });
+  }
   ghosts_.fold_forces(p);
   if (walls_.empty()) return;
   with_tangential_model(settings_.tangential_model, [&](auto model) { wall_forces<model.value>(memory_dt); });
@@ -28,9 +34,7 @@ void World::pair_forces(double memory_dt) {
   const bool has_spring = !mem.spring.empty();
   const bool has_normal = !mem.normal_prev.empty();
   const bool has_rolling = !mem.rolling.empty();
-  const bool has_shapes = has_composites();
-  // Rigid shapes cost a narrow phase per part pair: a team pays off with far fewer bodies.
-  const bool parallel = worth_parallel(has_shapes ? 16 * p.owned : p.owned);
+  const bool parallel = worth_parallel(p.owned);
   // Raw pointers: the force writes cannot alias the arrays read, and the compiler may keep
   // the bases in registers.
   const Vec3* __restrict position = p.position.data();
@@ -39,7 +43,6 @@ void World::pair_forces(double memory_dt) {
   const double* __restrict radius = p.radius.data();
   const double* __restrict inv_mass = p.inv_mass.data();
   const std::int32_t* __restrict species = p.species.data();
-  const std::int32_t* __restrict shape = p.shape.data();
   const std::uint32_t* __restrict neighbor = list.neighbors();
   Vec3* __restrict force = p.force.data();
   Vec3* __restrict torque = p.torque.data();
@@ -73,7 +76,6 @@ void World::pair_forces(double memory_dt) {
           const double reach = ri + rj;
           const double dist2 = norm2(d);
           if (dist2 >= reach * reach) {  // apart: a later contact starts afresh
-            if (has_shapes) pair_sub_[e].clear();
             if (marker && marker[e] != Vec3{}) {
               if (has_spring) spring[e] = {};
               if (has_normal) normal_prev[e] = {};
@@ -81,29 +83,11 @@ void World::pair_forces(double memory_dt) {
             }
             continue;
           }
-          if (has_shapes && (shape[i] != 0 || shape[j] != 0)) {  // rigid shapes: contacts between convex parts
-            const ContactResult r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt);
-            fi += r.force_on_i;
-            ti += r.torque_i;
-            force[j] -= r.force_on_i;
-            torque[j] += r.torque_j;
-            continue;
-          }
-          const double dist = std::sqrt(dist2);
-          const double inv_dist = 1.0 / dist;
-          ContactGeometry g;
-          g.normal = d * inv_dist;
-          g.overlap = reach - dist;
-          g.arm_i = g.normal * -(ri - 0.5 * g.overlap);  // Weinhart et al. 2012, branch vector b_ij after Eq. (8)
-          g.arm_j = g.normal * (rj - 0.5 * g.overlap);
-          g.inv_distance = inv_dist;
           const ContactMotion m{velocity[i], spin[i], velocity[j], spin[j]};
           const ContactHistoryRef h{has_spring ? spring + e : nullptr, has_normal ? normal_prev + e : nullptr,
                                     has_rolling ? rolling + e : nullptr};
-          const ContactParams& params = table_.pair(species_i, species[j]);
-          const double reduced_mass = 1.0 / (inv_mi + inv_mass[j]);
-          const double reduced_radius = params.rolling.enabled ? ri * rj / reach : 0.0;
-          const ContactResult r = contact_force<Model>(g, m, params, reduced_mass, reduced_radius, memory_dt, h);
+          const ContactResult r = sphere_contact<Model>(d, dist2, ri, rj, m, table_.pair(species_i, species[j]),
+                                                        1.0 / (inv_mi + inv_mass[j]), memory_dt, h);
           fi += r.force_on_i;
           ti += r.torque_i;
           force[j] -= r.force_on_i;

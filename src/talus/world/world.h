@@ -15,6 +15,7 @@
 #include "talus/world/periodic_ghosts.h"
 #include "talus/shape/composite_shape.h"
 #include "talus/world/phase_timer.h"
+#include "talus/world/placed_bodies.h"
 #include "talus/world/sub_contacts.h"
 #include "talus/world/wall.h"
 #include "talus/world/wall_contacts.h"
@@ -134,6 +135,7 @@ class World {
   void compute_forces(double memory_dt);
   template <TangentialModel Model> void pair_forces(double memory_dt);
   template <TangentialModel Model> void wall_forces(double memory_dt);
+  template <TangentialModel Model> void composite_pair_forces(double memory_dt);
   template <TangentialModel Model>
   ContactResult composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt);
   template <TangentialModel Model>
@@ -150,6 +152,14 @@ class World {
   ContactTable table_;
   std::vector<CompositeShape> shapes_ = std::vector<CompositeShape>(1);
   std::vector<SubContactList> pair_sub_, wall_sub_;
+  PlacedBodies placed_;  ///< parts of the rigid bodies in the world, this step
+  // Contributions to forces and torques per block of rows, applied in block order after the
+  // parallel pass (composite_pair_forces).
+  struct BodyLoad {
+    std::uint32_t body;
+    Vec3 force, torque;
+  };
+  std::vector<std::vector<BodyLoad>> block_loads_;
   CellGrid grid_;
   PairList pairs_;
   WallContactList wall_pairs_;

@@ -1,0 +1,49 @@
+#include "talus/world/placed_bodies.h"
+
+#include <variant>
+
+#include "talus/world/parallel.h"
+
+namespace talus {
+
+PlacedPart place_part(const CompositePart& part, const Pose& body) {
+  PlacedPart p;
+  p.pose = body * part.pose;
+  rotation_axes(p.pose.orientation, p.box.axis);
+  p.box.centre = p.pose.position;
+  const Vec3 c = part.capsule.half_axis;
+  p.capsule_axis = p.box.axis[0] * c.x + p.box.axis[1] * c.y + p.box.axis[2] * c.z;
+  p.capsule_radius = part.capsule.radius;
+  if (const Box* b = std::get_if<Box>(&part.shape.geometry)) {
+    p.box.half = b->half_extents;
+    p.is_box = true;
+  }
+  return p;
+}
+
+void PlacedBodies::place(const ParticleStore& p, const std::vector<CompositeShape>& shapes) {
+  const std::size_t n = p.position.size();
+  offset_.resize(n + 1);
+  std::uint32_t parts = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    offset_[i] = parts;
+    if (p.shape[i] != 0) parts += static_cast<std::uint32_t>(shapes[p.shape[i]].parts.size());
+  }
+  offset_[n] = parts;
+  bodies_.resize(n);
+  parts_.resize(parts);
+  const long count = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (worth_parallel(4 * n))
+  for (long i = 0; i < count; ++i) {
+    if (p.shape[i] == 0) continue;
+    const CompositeShape& s = shapes[p.shape[i]];
+    BodyFrame& b = bodies_[i];
+    rotation_axes(p.orientation[i], b.axis);
+    b.box_centre = p.position[i] + b.axis[0] * s.box_centre.x + b.axis[1] * s.box_centre.y + b.axis[2] * s.box_centre.z;
+    const Pose body{p.position[i], p.orientation[i]};
+    PlacedPart* out = parts_.data() + offset_[i];
+    for (std::size_t a = 0; a < s.parts.size(); ++a) out[a] = place_part(s.parts[a], body);
+  }
+}
+
+}  // namespace talus
