@@ -5,7 +5,8 @@
 // instead of 13.6 mm), whose two arms share one centre, so their bounding spheres never cull.
 //   bounding_capsule(geometry) : box -> segment along its longest side, radius = half-diagonal
 //                                of the cross-section; cylinder -> its axis; otherwise a ball.
-//   capsules_apart(...)         : true when two world capsules cannot touch (segment distance).
+//   segment_distance2(...)      : squared distance of two world capsule segments.
+//   capsules_apart(...)         : true when two world capsules cannot touch.
 #include <algorithm>
 
 #include "talus/math/vec3.h"
@@ -21,11 +22,10 @@ struct BoundingCapsule {
 
 BoundingCapsule bounding_capsule(const ConvexShape& shape);
 
-// Capsules centred at ca and cb with world half-axes ua, ub: true if the segments are at least
-// ra + rb apart (Ericson, Real-Time Collision Detection, Sec. 5.1.9, closest points of segments).
-// Inline: the pair loop of rigid bodies runs it for every pair of parts.
-inline bool capsules_apart(const Vec3& ca, const Vec3& ua, double ra, const Vec3& cb, const Vec3& ub, double rb) {
-  // Segments ca + s ua and cb + t ub, s, t in [-1, 1]; minimise |r + s ua - t ub|, r = ca - cb.
+// Squared distance of the segments ca + s ua and cb + t ub, s, t in [-1, 1] (Ericson,
+// Real-Time Collision Detection, Sec. 5.1.9, closest points of segments). Inline: the pair loop
+// of rigid bodies runs it for every pair of parts.
+inline double segment_distance2(const Vec3& ca, const Vec3& ua, const Vec3& cb, const Vec3& ub) {
   const Vec3 r = ca - cb;
   const double a = norm2(ua), e = norm2(ub), b = dot(ua, ub), c = dot(ua, r), f = dot(ub, r);
   const double denom = a * e - b * b;
@@ -42,8 +42,13 @@ inline bool capsules_apart(const Vec3& ca, const Vec3& ua, double ra, const Vec3
   } else if (e > 0) {
     t = std::clamp(f / e, -1.0, 1.0);
   }
+  return norm2(r + ua * s - ub * t);
+}
+
+// Capsules centred at ca and cb with world half-axes ua, ub: true if they cannot touch.
+inline bool capsules_apart(const Vec3& ca, const Vec3& ua, double ra, const Vec3& cb, const Vec3& ub, double rb) {
   const double reach = ra + rb;
-  return norm2(r + ua * s - ub * t) >= reach * reach;
+  return segment_distance2(ca, ua, cb, ub) >= reach * reach;
 }
 
 }  // namespace talus

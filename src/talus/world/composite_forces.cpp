@@ -9,7 +9,9 @@
 // per-entry lists have grown.
 #include <x86intrin.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <variant>
 
@@ -55,16 +57,21 @@ int sat_axis_of(std::uint32_t feature) {
 }
 
 // Contact points of two placed convex parts: a manifold, or the single deepest point.
-// `previous` is this part pair's contact of last step (or null), for the warm start.
+// `previous` is this part pair's contact of last step (or null), for the warm start. With no
+// point, *gap is a lower bound of the parts' distance when the test found one, else 0.
 int part_points(const ConvexShape& a, const PlacedPart& pa, const ConvexShape& b, const PlacedPart& pb, bool manifold,
-                const SubContact* previous, PointGeometry out[4]) {
+                const SubContact* previous, PointGeometry out[4], double* gap) {
+  *gap = 0;
   ContactCache warm;
   if (previous) warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
   if (manifold) {
     ContactManifold m;
     if (pa.is_box && pb.is_box) {
       const BoxBoxSat sat = box_box_sat(pa.box, pb.box, previous ? sat_axis_of(previous->feature) : -1);
-      if (sat.separated) return 0;
+      if (sat.separated) {
+        *gap = -sat.depth;
+        return 0;
+      }
       m = box_box_manifold(pa.box, pb.box, sat);
     } else {
       m = contact_manifold(a, pa.pose, b, pb.pose, &warm);
@@ -133,8 +140,9 @@ void apply_point(const PointGeometry& pg, double share, const ContactParams& par
 }
 
 // Body-level cull: the 6 face axes of the two bodies' part-bounding boxes (Gottschalk et al.
-// 1996). A separating face axis proves no part pair can touch.
-bool body_boxes_apart(const CompositeShape& si, const BodyFrame& bi, const CompositeShape& sj, const BodyFrame& bj) {
+// 1996). A separating face axis proves no part pair can touch; the separation along it, returned
+// when positive, is a lower bound of the bodies' distance (0: no face axis separates).
+double body_box_gap(const CompositeShape& si, const BodyFrame& bi, const CompositeShape& sj, const BodyFrame& bj) {
   const Vec3* A = bi.axis;
   const Vec3* B = bj.axis;
   const Vec3 d = bj.box_centre - bi.box_centre;
@@ -143,17 +151,22 @@ bool body_boxes_apart(const CompositeShape& si, const BodyFrame& bi, const Compo
   double absR[3][3];
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) absR[i][j] = std::abs(dot(A[i], B[j]));
-    if (std::abs(dot(d, A[i])) > ha[i] + hb[0] * absR[i][0] + hb[1] * absR[i][1] + hb[2] * absR[i][2]) return true;
+    const double gap = std::abs(dot(d, A[i])) - (ha[i] + hb[0] * absR[i][0] + hb[1] * absR[i][1] + hb[2] * absR[i][2]);
+    if (gap > 0) return gap;
   }
-  for (int j = 0; j < 3; ++j)
-    if (std::abs(dot(d, B[j])) > hb[j] + ha[0] * absR[0][j] + ha[1] * absR[1][j] + ha[2] * absR[2][j]) return true;
-  return false;
+  for (int j = 0; j < 3; ++j) {
+    const double gap = std::abs(dot(d, B[j])) - (hb[j] + ha[0] * absR[0][j] + ha[1] * absR[1][j] + ha[2] * absR[2][j]);
+    if (gap > 0) return gap;
+  }
+  return 0;
 }
 
-// Last step's list, moved aside while this step's is written (per thread, reused).
-SubContactList& previous_scratch(const SubContactList& contacts) {
+// Last step's list, swapped aside while this step's is written into `contacts`, which comes
+// back empty (per thread; buffers trade places, no copy).
+const SubContactList& previous_scratch(SubContactList& contacts) {
   thread_local SubContactList previous;
-  if (!contacts.empty() || !previous.empty()) previous.assign(contacts.begin(), contacts.end());
+  previous.clear();
+  previous.swap(contacts);
   return previous;
 }
 
@@ -162,14 +175,16 @@ std::uint64_t ticks(bool on) { return on ? __rdtsc() : 0; }
 }  // namespace
 
 template <TangentialModel Model>
-ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt) {
+ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt,
+                                    double& gap) {
+  gap = 0;
   const bool profile = composite_stats_enabled();
   const std::uint64_t t_start = ticks(profile);
   std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0;
   const ParticleStore& p = particles_;
   thread_local CompositeShape scratch_i, scratch_j;
-  const CompositeShape& si = shape_of(shapes_, p.shape[i], p.radius[i], scratch_i);
-  const CompositeShape& sj = shape_of(shapes_, p.shape[j], p.radius[j], scratch_j);
+  const CompositeShape& si = p.shape[i] != 0 ? shapes_[p.shape[i]] : shape_of(shapes_, 0, p.radius[i], scratch_i);
+  const CompositeShape& sj = p.shape[j] != 0 ? shapes_[p.shape[j]] : shape_of(shapes_, 0, p.radius[j], scratch_j);
   // A sphere has no box and no entry in the placement cache: one part at its centre.
   PlacedPart sphere_i, sphere_j;
   const bool has_box_i = p.shape[i] != 0, has_box_j = p.shape[j] != 0;
@@ -177,7 +192,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   if (!has_box_j) sphere_j = place_part(sj.parts[0], {p.position[j], p.orientation[j]});
   const PlacedPart* placed_i = has_box_i ? placed_.parts(i) : &sphere_i;
   const PlacedPart* placed_j = has_box_j ? placed_.parts(j) : &sphere_j;
-  if (has_box_i && has_box_j && body_boxes_apart(si, placed_.body(i), sj, placed_.body(j))) {
+  if (has_box_i && has_box_j && (gap = body_box_gap(si, placed_.body(i), sj, placed_.body(j))) > 0) {
     if (!contacts.empty()) contacts.clear();
     if (profile) {
       CompositeStats& st = composite_stats_slot();
@@ -192,9 +207,9 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   const ContactMotion motion{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
   const bool had_contacts = !contacts.empty();
   const SubContactList& previous = previous_scratch(contacts);
-  contacts.clear();
 
   ContactResult total;
+  double least_gap = std::numeric_limits<double>::infinity();  // over the part pairs, while all are apart
   std::uint64_t t0 = ticks(profile);
   const std::size_t ni = si.parts.size(), nj = sj.parts.size();
   for (std::size_t a = 0; a < ni; ++a) {
@@ -202,16 +217,21 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
     for (std::size_t b = 0; b < nj; ++b) {
       const PlacedPart& pb = placed_j[b];
       ++n_parts;
-      if (capsules_apart(pa.pose.position, pa.capsule_axis, pa.capsule_radius, pb.pose.position, pb.capsule_axis,
-                         pb.capsule_radius))
+      const double d2 = segment_distance2(pa.pose.position, pa.capsule_axis, pb.pose.position, pb.capsule_axis);
+      const double reach = pa.capsule_radius + pb.capsule_radius;
+      if (d2 >= reach * reach) {
+        least_gap = std::min(least_gap, std::sqrt(d2) - reach);
         continue;
+      }
       ++n_narrow;
       const std::uint64_t t1 = ticks(profile);
       t_cull += t1 - t0;
       const auto part_a = static_cast<std::uint16_t>(a), part_b = static_cast<std::uint16_t>(b);
       PointGeometry points[4];
+      double part_gap = 0;
       const int n = part_points(si.parts[a].shape, pa, sj.parts[b].shape, pb, settings_.contact_manifold,
-                                had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, points);
+                                had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, points, &part_gap);
+      least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
       const std::uint64_t t2 = ticks(profile);
       t_narrow += t2 - t1;
       for (int k = 0; k < n; ++k) {
@@ -232,6 +252,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       t_force += t0 - t2;
     }
   }
+  if (contacts.empty() && least_gap > 0 && least_gap < std::numeric_limits<double>::infinity()) gap = least_gap;
   if (profile) {
     const std::uint64_t t_end = ticks(profile);
     t_cull += t_end - t0;
@@ -258,7 +279,6 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
   const HalfSpace plane{wall.normal, dot(wall.normal, origin)};  // solid behind the wall, normal into the free side
   const ContactMotion motion{p.velocity[i], p.angular_velocity[i], wall_velocity, Vec3{}};
   const SubContactList& previous = previous_scratch(contacts);
-  contacts.clear();
   ContactResult total;
   const PlacedPart* placed = placed_.parts(i);
   for (std::size_t a = 0; a < si.parts.size(); ++a) {
@@ -306,6 +326,8 @@ void World::composite_pair_forces(double memory_dt) {
   const long rows = static_cast<long>(list.rows());
   const long blocks = (rows + kRowsPerBlock - 1) / kRowsPerBlock;
   if (block_loads_.size() < static_cast<std::size_t>(blocks)) block_loads_.resize(blocks);
+  if (pair_budget_.size() != list.entries()) pair_budget_.assign(list.entries(), 0.0);
+  double* budget = pair_budget_.data();
 #pragma omp parallel for schedule(dynamic, 1) if (worth_parallel(16 * p.owned))
   for (long block = 0; block < blocks; ++block) {
     std::vector<BodyLoad>& loads = block_loads_[block];
@@ -316,18 +338,28 @@ void World::composite_pair_forces(double memory_dt) {
       Vec3 fi, ti;
       for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
         const std::uint32_t j = list.neighbor(e);
+        // Apart by more than both bodies can have moved since the gap was measured.
+        const double travelled = placed_.travel(i) + placed_.travel(j);
+        if (travelled < budget[e]) continue;
+        // The contact lists live apart on the heap: fetch the next one while this pair runs.
+        if (e + 1 < list.entries()) __builtin_prefetch(pair_sub_[e + 1].data());
         const Vec3 d = p.position[i] - p.position[j];
         const double reach = p.radius[i] + p.radius[j];
         const double dist2 = norm2(d);
         if (dist2 >= reach * reach) {  // bounding spheres apart: a later contact starts afresh
           if (!pair_sub_[e].empty()) pair_sub_[e].clear();
           if (mem.active(e)) mem.clear(e);
+          budget[e] = travelled + (std::sqrt(dist2) - reach);
           continue;
         }
         ContactResult r;
         if (p.shape[i] != 0 || p.shape[j] != 0) {
-          r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt);
-          if (pair_sub_[e].empty()) continue;
+          double gap = 0;
+          r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, gap);
+          if (pair_sub_[e].empty()) {
+            budget[e] = travelled + gap;
+            continue;
+          }
         } else {
           const ContactMotion m{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
           r = sphere_contact<Model>(d, dist2, p.radius[i], p.radius[j], m, table_.pair(p.species[i], p.species[j]),
@@ -348,7 +380,7 @@ void World::composite_pair_forces(double memory_dt) {
 }
 
 #define TALUS_INSTANTIATE(M)                                                                                  \
-  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, SubContactList&, double);        \
+  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, SubContactList&, double, double&); \
   template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&, SubContactList&, double); \
   template void World::composite_pair_forces<M>(double);
 TALUS_INSTANTIATE(TangentialModel::memory)

@@ -1,5 +1,6 @@
 #include "talus/world/placed_bodies.h"
 
+#include <cmath>
 #include <variant>
 
 #include "talus/world/parallel.h"
@@ -32,9 +33,24 @@ void PlacedBodies::place(const ParticleStore& p, const std::vector<CompositeShap
   offset_[n] = parts;
   bodies_.resize(n);
   parts_.resize(parts);
+  const bool restart = restart_travel_ || travel_.size() != n;
+  if (restart) {
+    last_position_.assign(p.position.begin(), p.position.end());
+    last_orientation_.assign(p.orientation.begin(), p.orientation.end());
+    travel_.assign(n, 0.0);
+    restart_travel_ = false;
+  }
   const long count = static_cast<long>(n);
 #pragma omp parallel for schedule(static) if (worth_parallel(4 * n))
   for (long i = 0; i < count; ++i) {
+    if (!restart) {
+      // |vec(q_new q_old^*)| = sin(theta / 2) for the turn theta between the two poses.
+      const Quat turn = p.orientation[i] * last_orientation_[i].conjugate();
+      const double half_sine = std::sqrt(turn.x * turn.x + turn.y * turn.y + turn.z * turn.z);
+      travel_[i] += norm(p.position[i] - last_position_[i]) + 2 * p.radius[i] * half_sine;
+      last_position_[i] = p.position[i];
+      last_orientation_[i] = p.orientation[i];
+    }
     if (p.shape[i] == 0) continue;
     const CompositeShape& s = shapes[p.shape[i]];
     BodyFrame& b = bodies_[i];

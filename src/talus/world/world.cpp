@@ -167,6 +167,8 @@ void World::rebuild() {
 
   const MemoryLayout layout = memory_layout();
   pairs_.build(p, cell_of, grid_, skin_, layout);
+  pair_budget_.clear();  // new entries, and the travels restart
+  placed_.restart_travel();
   std::vector<CellCoord>().swap(cell_of);
   std::vector<std::int64_t> origin;
   pairs_.restore_memory(carried, p.gid, has_composites() ? &origin : nullptr);
