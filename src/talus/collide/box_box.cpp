@@ -101,17 +101,37 @@ BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis)
     valid[k] = s.overlap(k, &overlap[k]);
     if (overlap[k] < 0) return s.result(k, overlap[k], true);
   }
-  for (int k = 6; k < 15; ++k) {
-    valid[k] = s.overlap(k, &overlap[k]);
-    if (valid[k] && overlap[k] < 0) return s.result(k, overlap[k], true);
-  }
-  int best = -1;
+  // Edge axes: overlap = num / len. The sign needs no square root, and neither does the
+  // comparison with the best face unless the edge could win: touching pairs (the ones that get
+  // here) are mostly face contacts, so most edge axes are settled without sqrt or division.
+  static constexpr int next[3] = {1, 2, 0}, after[3] = {2, 0, 1};
+  double num[15], len2[15];
+  const Vec3& ha = a.half;
+  const Vec3& hb = b.half;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int k = 6 + 3 * i + j, i1 = next[i], i2 = after[i], j1 = next[j], j2 = after[j];
+      len2[k] = s.R[i1][j] * s.R[i1][j] + s.R[i2][j] * s.R[i2][j];
+      const double ra = ha[i1] * s.AbsR[i2][j] + ha[i2] * s.AbsR[i1][j];
+      const double rb = hb[j1] * s.AbsR[i][j2] + hb[j2] * s.AbsR[i][j1];
+      const double tl = s.t[i2] * s.R[i1][j] - s.t[i1] * s.R[i2][j];
+      num[k] = ra + rb - std::abs(tl);
+      valid[k] = len2[k] > 1e-12;  // parallel edges: no axis
+    }
+  for (int k = 6; k < 15; ++k)
+    if (valid[k] && num[k] < 0) return s.result(k, num[k] / std::sqrt(len2[k]), true);
+  int best = 0;
+  for (int k = 1; k < 6; ++k)
+    if (overlap[k] < overlap[best]) best = k;
+  // Face axes come first and edges must beat them by a relative margin: ties go to faces.
   const double edge_margin = 1e-9 * (norm(a.half) + norm(b.half));
-  for (int k = 0; k < 15; ++k) {
+  for (int k = 6; k < 15; ++k) {
     if (!valid[k]) continue;
-    // Face axes come first and edges must beat them by a relative margin: ties go to faces.
-    const double margin = k < 6 ? 0.0 : edge_margin;
-    if (best < 0 || overlap[k] < overlap[best] - margin) best = k;
+    const double threshold = overlap[best] - edge_margin;
+    // num / len < threshold, tested first as num^2 < threshold^2 len^2 with slack for rounding.
+    if (k != warm_axis && (threshold <= 0 || num[k] * num[k] > threshold * threshold * len2[k] * (1 + 1e-9))) continue;
+    overlap[k] = num[k] / std::sqrt(len2[k]);
+    if (overlap[k] < threshold) best = k;
   }
   if (warm && valid[warm_axis] && overlap[warm_axis] <= overlap[best] * 1.005) best = warm_axis;
   return s.result(best, overlap[best], false);
