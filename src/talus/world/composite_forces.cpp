@@ -183,11 +183,11 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0;
   const ParticleStore& p = particles_;
   thread_local CompositeShape scratch_i, scratch_j;
-  const CompositeShape& si = p.shape[i] != 0 ? shapes_[p.shape[i]] : shape_of(shapes_, 0, p.radius[i], scratch_i);
-  const CompositeShape& sj = p.shape[j] != 0 ? shapes_[p.shape[j]] : shape_of(shapes_, 0, p.radius[j], scratch_j);
+  const bool has_box_i = p.shape[i] != 0, has_box_j = p.shape[j] != 0;
+  const CompositeShape& si = has_box_i ? shapes_[p.shape[i]] : shape_of(shapes_, 0, p.radius[i], scratch_i);
+  const CompositeShape& sj = has_box_j ? shapes_[p.shape[j]] : shape_of(shapes_, 0, p.radius[j], scratch_j);
   // A sphere has no box and no entry in the placement cache: one part at its centre.
   PlacedPart sphere_i, sphere_j;
-  const bool has_box_i = p.shape[i] != 0, has_box_j = p.shape[j] != 0;
   if (!has_box_i) sphere_i = place_part(si.parts[0], {p.position[i], p.orientation[i]});
   if (!has_box_j) sphere_j = place_part(sj.parts[0], {p.position[j], p.orientation[j]});
   const PlacedPart* placed_i = has_box_i ? placed_.parts(i) : &sphere_i;
@@ -341,8 +341,6 @@ void World::composite_pair_forces(double memory_dt) {
         // Apart by more than both bodies can have moved since the gap was measured.
         const double travelled = placed_.travel(i) + placed_.travel(j);
         if (travelled < budget[e]) continue;
-        // The contact lists live apart on the heap: fetch the next one while this pair runs.
-        if (e + 1 < list.entries()) __builtin_prefetch(pair_sub_[e + 1].data());
         const Vec3 d = p.position[i] - p.position[j];
         const double reach = p.radius[i] + p.radius[j];
         const double dist2 = norm2(d);
