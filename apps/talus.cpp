@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -17,6 +18,7 @@
 #include "talus/scenario/checkpoint_series.h"
 #include "talus/scenario/run_checkpoint.h"
 #include "talus/scenario/run_loop.h"
+#include "talus/scenario/saved_coarse_grain.h"
 #include "talus/scenario/scenario.h"
 
 namespace {
@@ -30,6 +32,15 @@ io::ScenarioFile open_scenario(const std::string& path, const std::vector<std::s
 }
 
 // How a run starts: afresh, or from a checkpoint (`run --restart`, `resume`).
+// What `talus coarse-grain` was asked for.
+struct CoarseGrainRequest {
+  std::vector<std::string> grid;
+  std::string function = "gaussian";
+  double width = 0, cutoff = 0;
+  double from = 0, to = std::numeric_limits<double>::infinity();
+  std::string out;
+};
+
 struct RunStart {
   std::string restart;                        ///< checkpoint file; empty: from the scenario's start
   std::optional<double> checkpoint_interval;  ///< s, --checkpoint-interval
@@ -134,9 +145,23 @@ int command_analyze(const std::filesystem::path& dir, const std::vector<std::str
   nlohmann::json summary = io::read_json(dir / "summary.json");
   bool any = false;
   for (auto& o : scenario.observers) any = o->reanalyse(dir, summary) || any;
-  if (!any) throw std::runtime_error(dir.string() + ": nothing to analyse (no dam-break states in the folder)");
+  if (!any) throw std::runtime_error(dir.string() + ": nothing to analyse (neither dam-break states nor chute profiles)");
   io::write_json(dir / "summary.json", summary);
   std::printf("%s: summary.json updated\n", dir.string().c_str());
+  return 0;
+}
+
+// `talus coarse-grain DIR`: fields of Weinhart et al. 2012, Sect. 3, from the run's snapshot files.
+int command_coarse_grain(const std::filesystem::path& dir, const CoarseGrainRequest& r) {
+  const CgGrid grid = parse_cg_grid(r.grid);
+  const CgFunction f = r.function == "lucy" ? CgFunction::lucy(r.width, grid.dim())
+                                            : CgFunction::gaussian(r.width, grid.dim(), r.cutoff);
+  const SavedCoarseGraining cg = coarse_grain_saved(dir, grid, f, r.from, r.to);
+  const std::filesystem::path out = r.out.empty() ? dir / "coarse_grained.csv" : std::filesystem::path(r.out);
+  write_cg_fields_csv(out, cg.mean);
+  std::printf("%s: %d snapshots from t = %g to %g on %d grid points; %.3g s reading, %.3g s coarse graining per snapshot\n",
+              out.string().c_str(), cg.snapshots, cg.first_time, cg.last_time, grid.size(),
+              cg.read_seconds / cg.snapshots, cg.coarse_grain_seconds / cg.snapshots);
   return 0;
 }
 
@@ -207,6 +232,18 @@ int main(int argc, char** argv) {
   CLI::App* analyze = app.add_subcommand("analyze", "Measure a finished run again from its results folder");
   analyze->add_option("dir", path, "Results folder")->required();
   analyze->add_option("--set", overrides, "Override a scenario value, e.g. dam_break.pixel=1e-3");
+  CoarseGrainRequest cg;
+  CLI::App* coarse = app.add_subcommand("coarse-grain", "Continuum fields from a run's snapshot files (needs run.snapshot_interval)");
+  coarse->add_option("dir", path, "Results folder")->required();
+  coarse->add_option("--grid", cg.grid, "AXIS=LO:HI:N per resolved axis, e.g. --grid z=0:40:200 (others are averaged)")
+      ->required();
+  coarse->add_option("--function", cg.function, "gaussian or lucy")->check(CLI::IsMember({"gaussian", "lucy"}));
+  coarse->add_option("--width", cg.width, "Gaussian width w, or the Lucy cutoff c (length unit of the run)")
+      ->required()->check(CLI::PositiveNumber);
+  coarse->add_option("--cutoff", cg.cutoff, "Gaussian cutoff c (default 3 w)")->check(CLI::PositiveNumber);
+  coarse->add_option("--from", cg.from, "First snapshot time of the average");
+  coarse->add_option("--to", cg.to, "Last snapshot time of the average");
+  coarse->add_option("--out", cg.out, "CSV file (default DIR/coarse_grained.csv)");
   CLI::App* render = app.add_subcommand("render", "Draw a results folder's configuration as a PNG (needs run.vtk_interval)");
   render->add_option("dir", path, "Results folder")->required();
   render->add_option("--time", render_time, "Simulated time (s); default: the last frame");
@@ -280,6 +317,7 @@ int main(int argc, char** argv) {
     }
     if (*fit) return run_tool("chute_fits.py", fit->remaining());
     if (*analyze) return command_analyze(path, overrides);
+    if (*coarse) return command_coarse_grain(path, cg);
     if (*ensemble || *sweep) {
       // Bad input stops here, with its file and line, rather than in every run's log.
       std::vector<std::string> first = overrides;

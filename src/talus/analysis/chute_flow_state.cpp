@@ -1,6 +1,7 @@
 #include "talus/analysis/chute_flow_state.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace talus {
 
@@ -15,6 +16,13 @@ std::string to_string(FlowState s) {
     case FlowState::undetermined: return "undetermined";
   }
   return "undetermined";
+}
+
+FlowState flow_state_from_string(const std::string& text) {
+  for (FlowState s : {FlowState::arrested, FlowState::steady, FlowState::accelerating, FlowState::decelerating,
+                      FlowState::layered, FlowState::oscillating, FlowState::undetermined})
+    if (to_string(s) == text) return s;
+  throw std::invalid_argument("unknown flow state \"" + text + "\"");
 }
 
 std::optional<double> arrest_time(const std::vector<EnergySample>& samples, const FlowStateCriteria& c) {

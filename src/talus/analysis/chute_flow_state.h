@@ -19,6 +19,8 @@ enum class FlowState {
 };
 
 std::string to_string(FlowState s);
+// The inverse of to_string; throws std::invalid_argument for any other text.
+FlowState flow_state_from_string(const std::string& text);
 
 struct EnergySample {
   double time = 0;     ///< sqrt(d/g)

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "talus/io/atomic_file.h"
+#include "talus/io/flat_arrays.h"
 #include "talus/io/hdf5_file.h"
 #include "talus/io/input_error.h"
 
@@ -12,34 +13,6 @@ namespace talus::io {
 namespace {
 
 constexpr const char* kFormat = "talus-checkpoint";
-
-// ---- flattening: Vec3 and Quat arrays as rows of doubles ----
-
-std::vector<double> flat(const std::vector<Vec3>& v) {
-  std::vector<double> out;
-  out.reserve(3 * v.size());
-  for (const Vec3& x : v) out.insert(out.end(), {x.x, x.y, x.z});
-  return out;
-}
-
-std::vector<Vec3> vec3s(const std::vector<double>& v) {
-  std::vector<Vec3> out(v.size() / 3);
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] = {v[3 * k], v[3 * k + 1], v[3 * k + 2]};
-  return out;
-}
-
-std::vector<double> flat(const std::vector<Quat>& v) {
-  std::vector<double> out;
-  out.reserve(4 * v.size());
-  for (const Quat& q : v) out.insert(out.end(), {q.w, q.x, q.y, q.z});
-  return out;
-}
-
-std::vector<Quat> quats(const std::vector<double>& v) {
-  std::vector<Quat> out(v.size() / 4);
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] = {v[4 * k], v[4 * k + 1], v[4 * k + 2], v[4 * k + 3]};
-  return out;
-}
 
 // ---- walls as JSON (doubles round-trip exactly through nlohmann's shortest form) ----
 

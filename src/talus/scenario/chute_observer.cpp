@@ -1,15 +1,18 @@
 // The chute study as a RunObserver: energies at every output step for the flow state (Weinhart
 // et al. 2012, Sect. 6), snapshots every t_c/2 inside the averaging window coarse-grained into
 // depth profiles (Eq. 43), and at the end the profiles, the closure quantities and the balance
-// checks (Sect. 7) in chute_profile*.csv and summary.json.
+// checks (Sect. 7) in chute_profile*.csv and summary.json; `talus analyze` redoes the profiles from
+// saved snapshot files.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "talus/analysis/cg_fields_json.h"
 #include "talus/analysis/cg_time_average.h"
 #include "talus/analysis/chute_depth_summary.h"
 #include "talus/analysis/coarse_grain.h"
+#include "talus/io/snapshot_file.h"
 #include "talus/scenario/chute_profile_csv.h"
 #include "talus/scenario/chute_study.h"
 
@@ -47,7 +50,7 @@ class ChuteObserver final : public RunObserver {
     const double half_step = 0.5 * world.settings().time_step;
     if (world.time() < next_snapshot_ - half_step || world.time() > c_.end + half_step) return;
     while (next_snapshot_ <= world.time() + half_step) next_snapshot_ += c_.interval;
-    add_snapshot(world);
+    add_snapshot(world.snapshot());
   }
 
   bool output(World& world, const Diagnostics& d) override {
@@ -60,68 +63,51 @@ class ChuteObserver final : public RunObserver {
     const Diagnostics d = world.diagnostics();
     if (energies_.empty() || energies_.back().time < world.time()) energies_.push_back({world.time(), d.kinetic(), d.elastic()});
     const FlowStateResult flow = classify_flow(energies_, c_.criteria);
-    FlowState state = flow.state;
-    nlohmann::json chute = {{"energy_ratio_mean", flow.mean_ratio},
+    nlohmann::json chute = {{"energy_state", to_string(flow.state)},
+                            {"energy_ratio_mean", flow.mean_ratio},
                             {"energy_ratio_drift", flow.relative_drift},
                             {"energy_ratio_rms", flow.relative_rms},
                             {"state_window", {flow.window_start, flow.window_end}}};
     chute["arrest_time"] = flow.arrest_time ? nlohmann::json(*flow.arrest_time) : nlohmann::json(nullptr);
 
-    double mass = 0;
     const Snapshot snap = world.snapshot();
-    for (const ParticleRecord& p : snap.particles)
-      if (!p.fixed) mass += p.mass;
-    const double area = (snap.domain_max.x - snap.domain_min.x) * (snap.domain_max.y - snap.domain_min.y);
-    chute["flowing_mass_per_area"] = mass / area;
-
     // A run that ended before its window (an arrested pile stopped early) is measured on its
     // final state, so the h_stop search still knows the pile's height h.
     if (!widths_.empty() && widths_.front().average.count() == 0) {
-      add_snapshot(world);
+      add_snapshot(snap);
       chute["final_state_only"] = true;
     }
-    const int count = widths_.empty() ? 0 : widths_.front().average.count();
-    chute["snapshots"] = count;
-    if (count > 0) {
-      const CgFields profile = widths_.front().average.mean();
-      try {
-        const ChuteDepthSummary s =
-            summarize_chute_profile(profile, snap.gravity, c_.particle_density, c_.diameter, mass / area);
-        state = refine_with_layering(state, s.layering, c_.criteria);
-        const DepthAverages& a = s.averages;
-        summary["h"] = a.surface.height();
-        summary["base"] = a.surface.base;
-        summary["surface"] = a.surface.surface;
-        summary["mean_velocity"] = a.velocity;
-        summary["froude"] = s.froude;
-        summary["mu_macro"] = a.friction;
-        summary["K"] = a.stress_ratio;
-        summary["alpha"] = a.shape_factor;
-        summary["volume_fraction"] = s.volume_fraction;
-        summary["bulk_volume_fraction"] =
-            s.bulk_volume_fraction ? nlohmann::json(*s.bulk_volume_fraction) : nlohmann::json(nullptr);
-        const double accel = last_time_ > first_time_ ? (last_px_ - first_px_) / (mass * (last_time_ - first_time_)) : 0;
-        chute["checks"] = {{"mu_base", s.mu_base},
-                           {"tan_theta", std::tan(s.angle)},
-                           {"max_angle_deviation_deg", s.max_angle_deviation * 180 / M_PI},
-                           {"lithostatic_error", s.lithostatic_error},
-                           {"weight_error", s.weight_error},
-                           {"momentum_residual", s.momentum_residual},
-                           {"mass_residual", s.mass_residual},
-                           {"mean_acceleration", accel},
-                           {"layering", s.layering}};
-      } catch (const std::invalid_argument& e) {
-        chute["profile_error"] = e.what();  // e.g. no flow left on the grid
-      }
-      for (std::size_t k = 0; k < widths_.size(); ++k)
-        write_chute_profile_csv(out / profile_name(k, widths_[k].function.width), widths_[k].average.mean(),
-                                snap.gravity, c_.particle_density);
-      chute["averaging_window"] = {first_time_, last_time_};
-      chute["width"] = c_.width;
-      chute["coarse_graining_seconds"] = cg_seconds_;
+    report(flow.state, snap, out, summary, chute);
+  }
+
+  // Coarse-grains the run again from its saved snapshots (run.snapshot_interval) inside the
+  // averaging window, with the [chute.coarse_graining] settings as they are now (a new width,
+  // function or window via --set), and rewrites the profiles and the closure quantities. The flow
+  // state from the energies is kept from the run.
+  bool reanalyse(const std::filesystem::path& dir, nlohmann::json& summary) override {
+    if (!c_.coarse_grain || !summary.contains("chute")) return false;
+    const std::vector<std::filesystem::path> files = io::snapshot_files(dir);
+    if (files.empty())
+      throw std::runtime_error(dir.string() + ": no snapshots to coarse-grain (run with run.snapshot_interval > 0)");
+    for (WidthAverage& w : widths_) w.average = {};
+    cg_seconds_ = 0;
+    Snapshot last;
+    const double tolerance = 0.5 * c_.time_step;
+    for (const auto& file : files) {
+      Snapshot snap = io::read_snapshot_file(file);
+      if (snap.time >= c_.start - tolerance && snap.time <= c_.end + tolerance) add_snapshot(snap);
+      last = std::move(snap);
     }
-    summary["flow_state"] = to_string(state);
-    summary["chute"] = chute;
+    nlohmann::json chute = summary["chute"];
+    chute.erase("final_state_only");
+    if (widths_.front().average.count() == 0) {  // as in finish(): fall back on the final state
+      add_snapshot(last);
+      chute["final_state_only"] = true;
+    }
+    const FlowState energy_state = flow_state_from_string(chute.at("energy_state").get<std::string>());
+    report(energy_state, last, dir, summary, chute);
+    summary["chute"]["saved_snapshots"] = files.size();
+    return true;
   }
 
   nlohmann::json state() const override {
@@ -153,10 +139,9 @@ class ChuteObserver final : public RunObserver {
   }
 
  private:
-  // Coarse-grains the current state into every width's average (Eq. 43).
-  void add_snapshot(const World& world) {
+  // Coarse-grains one state into every width's average (Eq. 43).
+  void add_snapshot(const Snapshot& snap) {
     const auto t0 = std::chrono::steady_clock::now();
-    const Snapshot snap = world.snapshot();
     const CgGrid grid = CgGrid::depth(c_.z_min, c_.z_max, c_.points);
     for (WidthAverage& w : widths_) w.average.add(coarse_grain(snap, grid, w.function));
     // Downslope momentum of the flow, for the mean acceleration over the window.
@@ -170,6 +155,61 @@ class ChuteObserver final : public RunObserver {
     last_time_ = snap.time;
     last_px_ = px;
     cg_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  // The averaged profiles into the results: chute_profile*.csv, the closure quantities in
+  // `summary`, the balance checks in `chute` (then summary["chute"]). `last` is the final state,
+  // for the flowing mass. The energy state is refined by the layering the profile shows.
+  void report(FlowState state, const Snapshot& last, const std::filesystem::path& out, nlohmann::json& summary,
+              nlohmann::json& chute) const {
+    double mass = 0;
+    for (const ParticleRecord& p : last.particles)
+      if (!p.fixed) mass += p.mass;
+    const double area = (last.domain_max.x - last.domain_min.x) * (last.domain_max.y - last.domain_min.y);
+    chute["flowing_mass_per_area"] = mass / area;
+    const int count = widths_.empty() ? 0 : widths_.front().average.count();
+    chute["snapshots"] = count;
+    if (count > 0) {
+      const CgFields profile = widths_.front().average.mean();
+      try {
+        const ChuteDepthSummary s =
+            summarize_chute_profile(profile, last.gravity, c_.particle_density, c_.diameter, mass / area);
+        state = refine_with_layering(state, s.layering, c_.criteria);
+        const DepthAverages& a = s.averages;
+        summary["h"] = a.surface.height();
+        summary["base"] = a.surface.base;
+        summary["surface"] = a.surface.surface;
+        summary["mean_velocity"] = a.velocity;
+        summary["froude"] = s.froude;
+        summary["mu_macro"] = a.friction;
+        summary["K"] = a.stress_ratio;
+        summary["alpha"] = a.shape_factor;
+        summary["volume_fraction"] = s.volume_fraction;
+        summary["bulk_volume_fraction"] =
+            s.bulk_volume_fraction ? nlohmann::json(*s.bulk_volume_fraction) : nlohmann::json(nullptr);
+        const double accel = last_time_ > first_time_ ? (last_px_ - first_px_) / (mass * (last_time_ - first_time_)) : 0;
+        chute["checks"] = {{"mu_base", s.mu_base},
+                           {"tan_theta", std::tan(s.angle)},
+                           {"max_angle_deviation_deg", s.max_angle_deviation * 180 / M_PI},
+                           {"lithostatic_error", s.lithostatic_error},
+                           {"weight_error", s.weight_error},
+                           {"momentum_residual", s.momentum_residual},
+                           {"mass_residual", s.mass_residual},
+                           {"mean_acceleration", accel},
+                           {"layering", s.layering}};
+        chute.erase("profile_error");
+      } catch (const std::invalid_argument& e) {
+        chute["profile_error"] = e.what();  // e.g. no flow left on the grid
+      }
+      for (std::size_t k = 0; k < widths_.size(); ++k)
+        write_chute_profile_csv(out / profile_name(k, widths_[k].function.width), widths_[k].average.mean(),
+                                last.gravity, c_.particle_density);
+      chute["averaging_window"] = {first_time_, last_time_};
+      chute["width"] = c_.width;
+      chute["coarse_graining_seconds"] = cg_seconds_;
+    }
+    summary["flow_state"] = to_string(state);
+    summary["chute"] = chute;
   }
 
   ChuteStudyConfig c_;

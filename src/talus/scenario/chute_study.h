@@ -26,6 +26,7 @@ struct ChuteStudyConfig {
   int points = 0;                   ///< profile points
   double diameter = 1;              ///< d of the flowing particles
   double particle_density = 0;      ///< rho_p
+  double time_step = 0;             ///< sqrt(d/g), the run's: snapshot times are known to half of it
 };
 
 // Reads [chute.flow_state] and [chute.coarse_graining] (every key optional). `contact_time` is

@@ -31,6 +31,8 @@ io::Checkpoint capture_checkpoint(Scenario& sc, const LoopState& loop, const std
            {"next_frame", loop.next_frame},
            {"next_checkpoint", time_or_null(loop.next_checkpoint)},
            {"vtk_times", loop.vtk_times},
+           {"next_snapshot", loop.next_snapshot},
+           {"snapshots", loop.snapshots},
            {"pours", pours},
            {"observers", observers}};
   return c;
@@ -65,6 +67,8 @@ LoopState restore_checkpoint(Scenario& sc, const io::Checkpoint& c, const std::s
     loop.next_frame = c.run.at("next_frame").get<double>();
     loop.next_checkpoint = null_or_time(c.run.at("next_checkpoint"));
     loop.vtk_times = c.run.at("vtk_times").get<std::vector<double>>();
+    loop.next_snapshot = c.run.value("next_snapshot", 0.0);
+    loop.snapshots = c.run.value("snapshots", std::size_t{0});
     loop.rows = c.timeseries;
     return loop;
   } catch (const io::InputError&) {

@@ -17,6 +17,8 @@ struct LoopState {
   double next_frame = 0;   ///< s, time of the next VTK frame
   double next_checkpoint = std::numeric_limits<double>::infinity();  ///< s
   std::vector<double> vtk_times;  ///< s, of every VTK frame written
+  double next_snapshot = 0;       ///< s, time of the next snapshot file
+  std::size_t snapshots = 0;      ///< snapshot files written
   std::vector<double> rows;       ///< time-series rows written, row-major
 };
 

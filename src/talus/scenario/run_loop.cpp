@@ -14,6 +14,7 @@
 #include "talus/io/csv_writer.h"
 #include "talus/io/json_file.h"
 #include "talus/io/results_dir.h"
+#include "talus/io/snapshot_file.h"
 #include "talus/io/vtk_output.h"
 #include "talus/scenario/checkpoint_series.h"
 #include "talus/scenario/run_checkpoint.h"
@@ -122,6 +123,14 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
     loop.next_frame += run.vtk_interval;
   };
   if (run.vtk_interval > 0) vtk.emplace(opt.out / "vtk", world.shapes());
+  // Snapshot files for analyses of saved output (`talus coarse-grain`, `talus analyze`).
+  auto snapshot_due = [&] {
+    if (run.snapshot_interval <= 0 || world.time() < loop.next_snapshot - 0.5 * world.settings().time_step) return;
+    io::write_snapshot_file(opt.out / "snapshots" / io::snapshot_file_name(loop.snapshots), world.snapshot());
+    ++loop.snapshots;
+    loop.next_snapshot += run.snapshot_interval;
+  };
+  if (run.snapshot_interval > 0) std::filesystem::create_directories(opt.out / "snapshots");
   for (auto& o : sc.observers) o->start(world, opt.out);
   const double checkpoint_interval = opt.checkpoint_interval.value_or(run.checkpoint_interval);
   CheckpointSeries checkpoints(opt.out, run.checkpoint_keep);
@@ -142,6 +151,8 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
     record_row(world.diagnostics());
     loop.next_frame = world.time();
     frame_due();
+    loop.next_snapshot = world.time();
+    snapshot_due();
     loop.next_output = world.time() + run.output_interval;
     loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
@@ -168,6 +179,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
       if (stop) break;
     }
     frame_due();
+    snapshot_due();
     if (world.time() >= loop.next_checkpoint - 0.5 * dt) {
       loop.next_checkpoint += checkpoint_interval;
       write_checkpoint();

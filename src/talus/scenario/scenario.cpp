@@ -176,6 +176,7 @@ Scenario load_scenario(ScenarioFile& f) {
   if (f.has("run.stop_kinetic_energy")) run.stop_kinetic_energy = f.get<double>("run.stop_kinetic_energy", io::positive);
   run.stop_min_time = f.get_or<double>("run.stop_min_time", 0.0, io::non_negative);
   run.vtk_interval = f.get_or<double>("run.vtk_interval", 0.0, io::non_negative);
+  run.snapshot_interval = f.get_or<double>("run.snapshot_interval", 0.0, io::non_negative);
   run.checkpoint_interval = f.get_or<double>("run.checkpoint_interval", 0.0, io::non_negative);
   run.checkpoint_keep = static_cast<std::size_t>(f.get_or<std::int64_t>("run.checkpoint_keep", 3, io::positive));
   const double steps_per_contact = f.get_or<double>("run.steps_per_contact", 50, io::in_range(10, 1e9));
@@ -412,9 +413,12 @@ Scenario load_scenario(ScenarioFile& f) {
     if (domain.periodic[a] && domain.length(a) < 2 * (2.3 * r_max))
       f.fail(chute ? "chute" : "domain.hi", "periodic box narrower than two particle diameters plus skin");
 
-  if (chute)
-    sc.observers.push_back(make_chute_observer(read_chute_study(f, tc_min, run.end_time, chute_setup.fill_height,
-                                                                chute_setup.base_diameter, chute_setup.density)));
+  if (chute) {
+    ChuteStudyConfig study = read_chute_study(f, tc_min, run.end_time, chute_setup.fill_height,
+                                              chute_setup.base_diameter, chute_setup.density);
+    study.time_step = world->settings().time_step;
+    sc.observers.push_back(make_chute_observer(study));
+  }
   f.check_no_unknown_keys();
   for (const auto& s : species) sc.species.push_back(s.name);
   sc.wall_materials = materials;

@@ -21,6 +21,7 @@ struct RunControl {
   std::optional<double> stop_kinetic_energy; ///< J: stop once E_kin falls below, after stop_min_time
   double stop_min_time = 0;                  ///< s
   double vtk_interval = 0;                   ///< s between ParaView frames; 0: none
+  double snapshot_interval = 0;              ///< s between snapshot files (io/snapshot_file.h); 0: none
   double checkpoint_interval = 0;            ///< s between checkpoints; 0: only the final one
   std::size_t checkpoint_keep = 3;           ///< checkpoints kept in DIR/checkpoints/
   std::uint64_t seed = 1;
