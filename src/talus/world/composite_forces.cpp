@@ -3,10 +3,10 @@
 // the same contact law as a sphere, with its own memory.
 //
 // Cost, per body pair whose bounding spheres overlap: the parts are placed once (pose, box axes,
-// capsule), each part pair is culled by its capsules (segment distance), and only the survivors
-// run the narrow phase, warm-started from the contact they made last step (SAT axis from the
-// manifold feature id, GJK direction from the previous normal). No heap traffic once the
-// per-entry lists have grown.
+// capsule), each part pair not asleep (pair_budgets.h) is culled by its capsules (segment
+// distance), and only the survivors run the narrow phase, warm-started from the contact they
+// made last step (SAT axis from the manifold feature id, GJK direction from the previous
+// normal). No heap traffic once the per-entry lists have grown.
 #include <x86intrin.h>
 
 #include <algorithm>
@@ -176,7 +176,7 @@ std::uint64_t ticks(bool on) { return on ? __rdtsc() : 0; }
 
 template <TangentialModel Model>
 ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt,
-                                    double& gap) {
+                                    double travelled, double* part_budget, double& gap) {
   gap = 0;
   const bool profile = composite_stats_enabled();
   const std::uint64_t t_start = ticks(profile);
@@ -215,12 +215,21 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   for (std::size_t a = 0; a < ni; ++a) {
     const PlacedPart& pa = placed_i[a];
     for (std::size_t b = 0; b < nj; ++b) {
+      // Found apart by more than the two bodies have moved since: still apart, by at least
+      // what is left of the budget.
+      double& budget = part_budget[a * nj + b];
+      if (travelled < budget) {
+        least_gap = std::min(least_gap, budget - travelled);
+        continue;
+      }
       const PlacedPart& pb = placed_j[b];
       ++n_parts;
       const double d2 = segment_distance2(pa.pose.position, pa.capsule_axis, pb.pose.position, pb.capsule_axis);
       const double reach = pa.capsule_radius + pb.capsule_radius;
       if (d2 >= reach * reach) {
-        least_gap = std::min(least_gap, std::sqrt(d2) - reach);
+        const double capsule_gap = std::sqrt(d2) - reach;
+        least_gap = std::min(least_gap, capsule_gap);
+        budget = travelled + capsule_gap;
         continue;
       }
       ++n_narrow;
@@ -232,6 +241,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       const int n = part_points(si.parts[a].shape, pa, sj.parts[b].shape, pb, settings_.contact_manifold,
                                 had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, points, &part_gap);
       least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
+      if (n == 0 && part_gap > 0) budget = travelled + part_gap;
       const std::uint64_t t2 = ticks(profile);
       t_narrow += t2 - t1;
       for (int k = 0; k < n; ++k) {
@@ -326,13 +336,26 @@ void World::composite_pair_forces(double memory_dt) {
   const long rows = static_cast<long>(list.rows());
   const long blocks = (rows + kRowsPerBlock - 1) / kRowsPerBlock;
   if (block_loads_.size() < static_cast<std::size_t>(blocks)) block_loads_.resize(blocks);
-  if (pair_budget_.size() != list.entries()) pair_budget_.assign(list.entries(), 0.0);
-  double* budget = pair_budget_.data();
+  if (!budgets_.matches(list)) budgets_.reset(list, p, shapes_);
+  double* budget = budgets_.body();
 #pragma omp parallel for schedule(dynamic, 1) if (worth_parallel(16 * p.owned))
   for (long block = 0; block < blocks; ++block) {
     std::vector<BodyLoad>& loads = block_loads_[block];
     loads.clear();
     const long last = std::min(rows, (block + 1) * kRowsPerBlock);
+    // What the awake pairs of the block will read first lies in scattered heap lines (last
+    // step's contact points, the part-pair budgets, the neighbour's placed parts): asking for
+    // them all at once lets the cache misses overlap instead of stalling one pair at a time.
+    for (long row = block * kRowsPerBlock; row < last; ++row) {
+      const auto i = static_cast<std::uint32_t>(row);
+      for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
+        const std::uint32_t j = list.neighbor(e);
+        if (placed_.travel(i) + placed_.travel(j) < budget[e]) continue;
+        __builtin_prefetch(budgets_.parts(e));
+        if (!pair_sub_[e].empty()) __builtin_prefetch(pair_sub_[e].data());
+        if (p.shape[j] != 0) __builtin_prefetch(placed_.parts(j));
+      }
+    }
     for (long row = block * kRowsPerBlock; row < last; ++row) {
       const auto i = static_cast<std::uint32_t>(row);
       Vec3 fi, ti;
@@ -353,7 +376,7 @@ void World::composite_pair_forces(double memory_dt) {
         ContactResult r;
         if (p.shape[i] != 0 || p.shape[j] != 0) {
           double gap = 0;
-          r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, gap);
+          r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, travelled, budgets_.parts(e), gap);
           if (pair_sub_[e].empty()) {
             budget[e] = travelled + gap;
             continue;
@@ -378,7 +401,8 @@ void World::composite_pair_forces(double memory_dt) {
 }
 
 #define TALUS_INSTANTIATE(M)                                                                                  \
-  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, SubContactList&, double, double&); \
+  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, SubContactList&, double, double, double*, \
+                                                  double&);                                                   \
   template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&, SubContactList&, double); \
   template void World::composite_pair_forces<M>(double);
 TALUS_INSTANTIATE(TangentialModel::memory)

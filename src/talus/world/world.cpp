@@ -167,7 +167,7 @@ void World::rebuild() {
 
   const MemoryLayout layout = memory_layout();
   pairs_.build(p, cell_of, grid_, skin_, layout);
-  pair_budget_.clear();  // new entries, and the travels restart
+  budgets_.clear();  // new entries, and the travels restart
   placed_.restart_travel();
   std::vector<CellCoord>().swap(cell_of);
   std::vector<std::int64_t> origin;

@@ -15,6 +15,7 @@
 #include "talus/world/periodic_ghosts.h"
 #include "talus/shape/composite_shape.h"
 #include "talus/world/phase_timer.h"
+#include "talus/world/pair_budgets.h"
 #include "talus/world/placed_bodies.h"
 #include "talus/world/sub_contacts.h"
 #include "talus/world/wall.h"
@@ -137,7 +138,8 @@ class World {
   template <TangentialModel Model> void wall_forces(double memory_dt);
   template <TangentialModel Model> void composite_pair_forces(double memory_dt);
   template <TangentialModel Model>
-  ContactResult composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt, double& gap);
+  ContactResult composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt,
+                               double travelled, double* part_budget, double& gap);
   template <TangentialModel Model>
   ContactResult composite_wall(std::size_t i, const Wall& wall, const Vec3& origin, const Vec3& wall_velocity,
                                SubContactList& contacts, double memory_dt);
@@ -160,9 +162,9 @@ class World {
     Vec3 force, torque;
   };
   std::vector<std::vector<BodyLoad>> block_loads_;
-  // Per list entry: the pair was last found apart, and stays so while the two bodies' travels
-  // (PlacedBodies::travel) add up to less than this (m). Cleared at every rebuild.
-  std::vector<double> pair_budget_;
+  // Per list entry and per part pair: found apart, and so while the two bodies' travels
+  // (PlacedBodies::travel) add up to less than the budget. Cleared at every rebuild.
+  PairBudgets budgets_;
   CellGrid grid_;
   PairList pairs_;
   WallContactList wall_pairs_;
