@@ -55,9 +55,9 @@ inline bool isotropic(const Vec3& inv_i) { return inv_i.x == inv_i.y && inv_i.y 
 }
 }  // namespace
 
-void kick(ParticleStore& p, double h, const Vec3& gravity) {
+void kick(ParticleStore& p, double h, const Vec3& gravity, std::size_t cost) {
   const std::size_t n = p.owned;
-#pragma omp parallel for schedule(static) if (worth_parallel(n))
+#pragma omp parallel for schedule(static) if (worth_parallel(n * cost))
   for (std::size_t i = 0; i < n; ++i) {
     const double inv_m = p.inv_mass[i];
     if (inv_m == 0.0) continue;  // fixed particles: infinite mass, unaffected by gravity
@@ -65,10 +65,10 @@ void kick(ParticleStore& p, double h, const Vec3& gravity) {
   }
 }
 
-double drift(ParticleStore& p, double dt, const std::vector<Vec3>& at_build) {
+double drift(ParticleStore& p, double dt, const std::vector<Vec3>& at_build, std::size_t cost) {
   const std::size_t n = p.owned;
   double max_d2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel(n))
+#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel(n * cost))
   for (std::size_t i = 0; i < n; ++i) {
     if (p.inv_mass[i] == 0.0) continue;
     max_d2 = std::max(max_d2, drift_one(p, i, dt, at_build[i]));
@@ -76,10 +76,11 @@ double drift(ParticleStore& p, double dt, const std::vector<Vec3>& at_build) {
   return max_d2;
 }
 
-double kick_drift(ParticleStore& p, double h, double dt, const Vec3& gravity, const std::vector<Vec3>& at_build) {
+double kick_drift(ParticleStore& p, double h, double dt, const Vec3& gravity, const std::vector<Vec3>& at_build,
+                  std::size_t cost) {
   const std::size_t n = p.owned;
   double max_d2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel(n))
+#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel(n * cost))
   for (std::size_t i = 0; i < n; ++i) {
     const double inv_m = p.inv_mass[i];
     if (inv_m != 0.0) {

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -74,14 +75,14 @@ int part_points(const ConvexShape& a, const PlacedPart& pa, const ConvexShape& b
       }
       m = box_box_manifold(pa.box, pb.box, sat);
     } else {
-      m = contact_manifold(a, pa.pose, b, pb.pose, &warm);
+      m = contact_manifold(a, pa.pose(), b, pb.pose(), &warm);
     }
     int n = 0;
     for (int k = 0; k < m.count; ++k)
       if (m.points[k].delta_n > 0) out[n++] = {m.normal, m.points[k].point, m.points[k].delta_n, m.points[k].feature_id};
     return n;
   }
-  const PartContact c = narrow_phase(a, pa.pose, b, pb.pose, &warm);
+  const PartContact c = narrow_phase(a, pa.pose(), b, pb.pose(), &warm);
   if (!c.touching || !(c.delta_n > 0)) return 0;
   out[0] = {c.normal, c.point, c.delta_n, 0};
   return 1;
@@ -187,11 +188,11 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   const CompositeShape& si = has_box_i ? shapes_[p.shape[i]] : shape_of(shapes_, 0, p.radius[i], scratch_i);
   const CompositeShape& sj = has_box_j ? shapes_[p.shape[j]] : shape_of(shapes_, 0, p.radius[j], scratch_j);
   // A sphere has no box and no entry in the placement cache: one part at its centre.
-  PlacedPart sphere_i, sphere_j;
-  if (!has_box_i) sphere_i = place_part(si.parts[0], {p.position[i], p.orientation[i]});
-  if (!has_box_j) sphere_j = place_part(sj.parts[0], {p.position[j], p.orientation[j]});
-  const PlacedPart* placed_i = has_box_i ? placed_.parts(i) : &sphere_i;
-  const PlacedPart* placed_j = has_box_j ? placed_.parts(j) : &sphere_j;
+  std::optional<PlacedPart> sphere_i, sphere_j;
+  if (!has_box_i) place_part(si.parts[0], {p.position[i], p.orientation[i]}, sphere_i.emplace());
+  if (!has_box_j) place_part(sj.parts[0], {p.position[j], p.orientation[j]}, sphere_j.emplace());
+  const PlacedPart* placed_i = has_box_i ? placed_.parts(i) : &*sphere_i;
+  const PlacedPart* placed_j = has_box_j ? placed_.parts(j) : &*sphere_j;
   if (has_box_i && has_box_j && (gap = body_box_gap(si, placed_.body(i), sj, placed_.body(j))) > 0) {
     if (!contacts.empty()) contacts.clear();
     if (profile) {
@@ -224,7 +225,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       }
       const PlacedPart& pb = placed_j[b];
       ++n_parts;
-      const double d2 = segment_distance2(pa.pose.position, pa.capsule_axis, pb.pose.position, pb.capsule_axis);
+      const double d2 = segment_distance2(pa.box.centre, pa.capsule_axis, pb.box.centre, pb.capsule_axis);
       const double reach = pa.capsule_radius + pb.capsule_radius;
       if (d2 >= reach * reach) {
         const double capsule_gap = std::sqrt(d2) - reach;
@@ -245,7 +246,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       const std::uint64_t t2 = ticks(profile);
       t_narrow += t2 - t1;
       for (int k = 0; k < n; ++k) {
-        SubContact s;
+        SubContact& s = contacts.emplace_back();  // written in place: no copy of the record
         s.part_i = part_a;
         s.part_j = part_b;
         s.feature = points[k].feature;
@@ -255,7 +256,6 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
         }
         apply_point<Model>(points[k], 1.0 / n, params, reduced_mass, reduced_radius, p.position[i], p.position[j], motion,
                            memory_dt, s, total);
-        contacts.push_back(s);
       }
       n_points += static_cast<std::uint64_t>(n);
       t0 = ticks(profile);
@@ -292,9 +292,19 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
   ContactResult total;
   const PlacedPart* placed = placed_.parts(i);
   for (std::size_t a = 0; a < si.parts.size(); ++a) {
-    const Pose& pa = placed[a].pose;
     // The part's bounding sphere clears the plane: no corner can touch it.
-    if (dot(pa.position, plane.normal) - plane.offset >= si.parts[a].shape.bounding_radius) continue;
+    if (dot(placed[a].box.centre, plane.normal) - plane.offset >= si.parts[a].shape.bounding_radius) continue;
+    // A box's support along the normal clears the plane too (with a margin far above rounding,
+    // so this skips nothing the corner test below would keep): most boxes near a wall are
+    // tilted away from it.
+    if (const PlacedPart& part = placed[a]; part.is_box) {
+      const OrientedBox& box = part.box;
+      const double reach = box.half.x * std::abs(dot(box.axis[0], plane.normal)) +
+                           box.half.y * std::abs(dot(box.axis[1], plane.normal)) +
+                           box.half.z * std::abs(dot(box.axis[2], plane.normal));
+      if (dot(box.centre, plane.normal) - plane.offset - reach > 1e-9 * si.parts[a].shape.bounding_radius) continue;
+    }
+    const Pose pa = placed[a].pose();
     PointGeometry points[4];
     int n = 0;
     if (settings_.contact_manifold) {
@@ -307,7 +317,7 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
     }
     for (int k = 0; k < n; ++k) {
       if (wall.bounded && !wall_faces(wall, origin, points[k].point, 0.0)) continue;
-      SubContact s;
+      SubContact& s = contacts.emplace_back();
       s.part_i = static_cast<std::uint16_t>(a);
       s.feature = points[k].feature;
       if (const SubContact* old = find_previous(previous, s)) {
@@ -316,7 +326,6 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
       }
       apply_point<Model>(points[k], 1.0 / n, params, 1.0 / p.inv_mass[i], p.radius[i], p.position[i], points[k].point,
                          motion, memory_dt, s, total);
-      contacts.push_back(s);
     }
   }
   return total;
@@ -324,8 +333,9 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
 
 // Pairs of rigid bodies cost a culling stage and a narrow phase each, and a pile rarely spans
 // enough slabs for the colouring of pair_forces to keep two threads busy. So rows are taken in
-// blocks, any block by any thread, each block recording what it adds to which body; the
-// records are then applied block by block, in the same order on any number of threads.
+// blocks, any block by any thread, each block recording what it adds to which body, binned by
+// the body's range of indices. The ranges are then applied in parallel, each block by block:
+// every body receives its contributions in the same order on any number of threads.
 template <TangentialModel Model>
 void World::composite_pair_forces(double memory_dt) {
   ScopedPhase phase(timer_, Phase::pair_forces);
@@ -338,66 +348,74 @@ void World::composite_pair_forces(double memory_dt) {
   if (block_loads_.size() < static_cast<std::size_t>(blocks)) block_loads_.resize(blocks);
   if (!budgets_.matches(list)) budgets_.reset(list, p, shapes_);
   double* budget = budgets_.body();
-#pragma omp parallel for schedule(dynamic, 1) if (worth_parallel(16 * p.owned))
-  for (long block = 0; block < blocks; ++block) {
-    std::vector<BodyLoad>& loads = block_loads_[block];
-    loads.clear();
-    const long last = std::min(rows, (block + 1) * kRowsPerBlock);
-    // What the awake pairs of the block will read first lies in scattered heap lines (last
-    // step's contact points, the part-pair budgets, the neighbour's placed parts): asking for
-    // them all at once lets the cache misses overlap instead of stalling one pair at a time.
-    for (long row = block * kRowsPerBlock; row < last; ++row) {
-      const auto i = static_cast<std::uint32_t>(row);
-      for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
-        const std::uint32_t j = list.neighbor(e);
-        if (placed_.travel(i) + placed_.travel(j) < budget[e]) continue;
-        __builtin_prefetch(budgets_.parts(e));
-        if (!pair_sub_[e].empty()) __builtin_prefetch(pair_sub_[e].data());
-        if (p.shape[j] != 0) __builtin_prefetch(placed_.parts(j));
-      }
-    }
-    for (long row = block * kRowsPerBlock; row < last; ++row) {
-      const auto i = static_cast<std::uint32_t>(row);
-      Vec3 fi, ti;
-      for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
-        const std::uint32_t j = list.neighbor(e);
-        // Apart by more than both bodies can have moved since the gap was measured.
-        const double travelled = placed_.travel(i) + placed_.travel(j);
-        if (travelled < budget[e]) continue;
-        const Vec3 d = p.position[i] - p.position[j];
-        const double reach = p.radius[i] + p.radius[j];
-        const double dist2 = norm2(d);
-        if (dist2 >= reach * reach) {  // bounding spheres apart: a later contact starts afresh
-          if (!pair_sub_[e].empty()) pair_sub_[e].clear();
-          if (mem.active(e)) mem.clear(e);
-          budget[e] = travelled + (std::sqrt(dist2) - reach);
-          continue;
+  const std::size_t bodies = p.position.size();  // ghosts receive loads too (folded later)
+  auto range_of = [bodies](std::uint32_t body) { return static_cast<std::size_t>(body) * kLoadRanges / bodies; };
+#pragma omp parallel if (worth_parallel(16 * p.owned))
+  {
+#pragma omp for schedule(dynamic, 1)
+    for (long block = 0; block < blocks; ++block) {
+      BlockLoads& loads = block_loads_[block];
+      for (std::vector<BodyLoad>& range : loads) range.clear();
+      const long last = std::min(rows, (block + 1) * kRowsPerBlock);
+      // What the awake pairs of the block will read first lies in scattered heap lines (last
+      // step's contact points, the part-pair budgets, the neighbour's placed parts): asking for
+      // them all at once lets the cache misses overlap instead of stalling one pair at a time.
+      for (long row = block * kRowsPerBlock; row < last; ++row) {
+        const auto i = static_cast<std::uint32_t>(row);
+        for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
+          const std::uint32_t j = list.neighbor(e);
+          if (placed_.travel(i) + placed_.travel(j) < budget[e]) continue;
+          __builtin_prefetch(budgets_.parts(e));
+          if (!pair_sub_[e].empty()) __builtin_prefetch(pair_sub_[e].data());
+          if (p.shape[j] != 0)  // the capsule line of each part
+            for (std::size_t b = 0; b < placed_.part_count(j); ++b) __builtin_prefetch(placed_.parts(j) + b);
         }
-        ContactResult r;
-        if (p.shape[i] != 0 || p.shape[j] != 0) {
-          double gap = 0;
-          r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, travelled, budgets_.parts(e), gap);
-          if (pair_sub_[e].empty()) {
-            budget[e] = travelled + gap;
+      }
+      for (long row = block * kRowsPerBlock; row < last; ++row) {
+        const auto i = static_cast<std::uint32_t>(row);
+        Vec3 fi, ti;
+        for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
+          const std::uint32_t j = list.neighbor(e);
+          // Apart by more than both bodies can have moved since the gap was measured.
+          const double travelled = placed_.travel(i) + placed_.travel(j);
+          if (travelled < budget[e]) continue;
+          const Vec3 d = p.position[i] - p.position[j];
+          const double reach = p.radius[i] + p.radius[j];
+          const double dist2 = norm2(d);
+          if (dist2 >= reach * reach) {  // bounding spheres apart: a later contact starts afresh
+            if (!pair_sub_[e].empty()) pair_sub_[e].clear();
+            if (mem.active(e)) mem.clear(e);
+            budget[e] = travelled + (std::sqrt(dist2) - reach);
             continue;
           }
-        } else {
-          const ContactMotion m{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
-          r = sphere_contact<Model>(d, dist2, p.radius[i], p.radius[j], m, table_.pair(p.species[i], p.species[j]),
-                                    1.0 / (p.inv_mass[i] + p.inv_mass[j]), memory_dt, memory_ref(mem, e));
+          ContactResult r;
+          if (p.shape[i] != 0 || p.shape[j] != 0) {
+            double gap = 0;
+            r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, travelled, budgets_.parts(e), gap);
+            if (pair_sub_[e].empty()) {
+              budget[e] = travelled + gap;
+              continue;
+            }
+          } else {
+            const ContactMotion m{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
+            r = sphere_contact<Model>(d, dist2, p.radius[i], p.radius[j], m, table_.pair(p.species[i], p.species[j]),
+                                      1.0 / (p.inv_mass[i] + p.inv_mass[j]), memory_dt, memory_ref(mem, e));
+          }
+          fi += r.force_on_i;
+          ti += r.torque_i;
+          loads[range_of(j)].push_back({j, -r.force_on_i, r.torque_j});
         }
-        fi += r.force_on_i;
-        ti += r.torque_i;
-        loads.push_back({j, -r.force_on_i, r.torque_j});
+        if (fi != Vec3{} || ti != Vec3{}) loads[range_of(i)].push_back({i, fi, ti});
       }
-      if (fi != Vec3{} || ti != Vec3{}) loads.push_back({i, fi, ti});
     }
+#pragma omp for schedule(static)
+    for (int range = 0; range < kLoadRanges; ++range)
+      for (long block = 0; block < blocks; ++block)
+        for (const BodyLoad& l : block_loads_[block][range]) {
+          p.force[l.body] += l.force;
+          p.torque[l.body] += l.torque;
+        }
   }
-  for (long block = 0; block < blocks; ++block)
-    for (const BodyLoad& l : block_loads_[block]) {
-      p.force[l.body] += l.force;
-      p.torque[l.body] += l.torque;
-    }
 }
 
 #define TALUS_INSTANTIATE(M)                                                                                  \

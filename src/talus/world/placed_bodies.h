@@ -17,13 +17,16 @@
 
 namespace talus {
 
-// A convex part placed in the world.
-struct PlacedPart {
-  Pose pose;
-  OrientedBox box;      ///< axes always set; centre and half extents too when the part is a box
-  Vec3 capsule_axis;    ///< world half-axis of the culling capsule (m)
-  double capsule_radius = 0;
+// A convex part placed in the world: three cache lines, the first holding all the capsule cull
+// reads (axis, radius, centre), so a pair whose capsules are apart touches one line per part.
+struct alignas(64) PlacedPart {
+  Vec3 capsule_axis;          ///< world half-axis of the culling capsule (m)
+  double capsule_radius = 0;  ///< m
   bool is_box = false;
+  OrientedBox box;            ///< centre and axes always set; half extents too when the part is a box
+  Quat orientation;           ///< part to world
+
+  Pose pose() const { return {box.centre, orientation}; }
 };
 
 // A body's frame in the world, and the centre of its part-bounding box.
@@ -32,7 +35,7 @@ struct BodyFrame {
   Vec3 box_centre;  ///< world centre of the composite's box (CompositeShape::box_centre)
 };
 
-PlacedPart place_part(const CompositePart& part, const Pose& body);
+void place_part(const CompositePart& part, const Pose& body, PlacedPart& out);
 
 class PlacedBodies {
  public:
@@ -46,6 +49,7 @@ class PlacedBodies {
   double travel(std::size_t i) const { return travel_[i]; }
   const BodyFrame& body(std::size_t i) const { return bodies_[i]; }
   const PlacedPart* parts(std::size_t i) const { return parts_.data() + offset_[i]; }
+  std::size_t part_count(std::size_t i) const { return offset_[i + 1] - offset_[i]; }
 
  private:
   std::vector<BodyFrame> bodies_;

@@ -1,6 +1,7 @@
 #pragma once
 // The simulated system and its time step. World::step() reads as the pipeline:
 // kick, drift, (rebuild | refresh ghosts), contact forces, kick.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -144,6 +145,7 @@ class World {
   ContactResult composite_wall(std::size_t i, const Wall& wall, const Vec3& origin, const Vec3& wall_velocity,
                                SubContactList& contacts, double memory_dt);
   bool has_composites() const;
+  std::size_t integration_cost() const;  ///< per particle, in sphere updates (velocity_verlet.h)
   double interaction_range() const;
   MemoryLayout memory_layout() const;
 
@@ -155,13 +157,16 @@ class World {
   std::vector<CompositeShape> shapes_ = std::vector<CompositeShape>(1);
   std::vector<SubContactList> pair_sub_, wall_sub_;
   PlacedBodies placed_;  ///< parts of the rigid bodies in the world, this step
-  // Contributions to forces and torques per block of rows, applied in block order after the
-  // parallel pass (composite_pair_forces).
+  // Contributions to forces and torques per block of rows, binned by the receiving body's range
+  // of indices, applied after the pass range by range (in parallel) and block by block within
+  // a range (composite_pair_forces).
   struct BodyLoad {
     std::uint32_t body;
     Vec3 force, torque;
   };
-  std::vector<std::vector<BodyLoad>> block_loads_;
+  static constexpr int kLoadRanges = 8;
+  using BlockLoads = std::array<std::vector<BodyLoad>, kLoadRanges>;
+  std::vector<BlockLoads> block_loads_;
   // Per list entry and per part pair: found apart, and so while the two bodies' travels
   // (PlacedBodies::travel) add up to less than the budget. Cleared at every rebuild.
   PairBudgets budgets_;
