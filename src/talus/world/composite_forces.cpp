@@ -173,6 +173,13 @@ const SubContactList& previous_scratch(SubContactList& contacts) {
 
 std::uint64_t ticks(bool on) { return on ? __rdtsc() : 0; }
 
+// Asks for the cache lines of [data, data + bytes), at most 8 of them.
+void prefetch_lines(const void* data, std::size_t bytes) {
+  const char* c = static_cast<const char*>(data);
+  const std::size_t lines = std::min<std::size_t>((bytes + 63) / 64, 8);
+  for (std::size_t k = 0; k < lines; ++k) __builtin_prefetch(c + 64 * k);
+}
+
 }  // namespace
 
 template <TangentialModel Model>
@@ -366,9 +373,9 @@ void World::composite_pair_forces(double memory_dt) {
           const std::uint32_t j = list.neighbor(e);
           if (placed_.travel(i) + placed_.travel(j) < budget[e]) continue;
           __builtin_prefetch(budgets_.parts(e));
-          if (!pair_sub_[e].empty()) __builtin_prefetch(pair_sub_[e].data());
-          if (p.shape[j] != 0)  // the capsule line of each part
-            for (std::size_t b = 0; b < placed_.part_count(j); ++b) __builtin_prefetch(placed_.parts(j) + b);
+          prefetch_lines(pair_sub_[e].data(), pair_sub_[e].size() * sizeof(SubContact));
+          if (p.shape[j] != 0)  // capsule line and box lines of every part
+            prefetch_lines(placed_.parts(j), placed_.part_count(j) * sizeof(PlacedPart));
         }
       }
       for (long row = block * kRowsPerBlock; row < last; ++row) {
