@@ -106,7 +106,7 @@ ContactManifold box_box_manifold(const OrientedBox& a, const OrientedBox& b, con
       int kept = 0;
       for (int q = 0; q < count; ++q) {
         const ClipVertex& pa = poly[q];
-        const ClipVertex& pb = poly[(q + 1) % count];
+        const ClipVertex& pb = poly[q + 1 == count ? 0 : q + 1];  // no integer division in the hot loop
         const double da = dot(n, pa.p) - w, db = dot(n, pb.p) - w;
         if (da <= 0 && kept < kMaxClip) next[kept++] = pa;
         if (((da < 0 && db > 0) || (da > 0 && db < 0)) && kept < kMaxClip) {

@@ -115,7 +115,10 @@ void World::wall_forces(double memory_dt) {
     active[w] = walls_[w].active(t);
   }
   const long n = static_cast<long>(list.rows());
-#pragma omp parallel for schedule(static) if (worth_parallel(has_composites() ? 16 * p.owned : p.owned))
+  // Wall contacts crowd into the particles of a few cells (a pile's base, the gate): dynamic
+  // chunks keep both threads busy. Each row writes only its own particle, so any schedule
+  // gives the same result.
+#pragma omp parallel for schedule(dynamic, 64) if (worth_parallel(has_composites() ? 16 * p.owned : p.owned))
   for (long i = 0; i < n; ++i) {
     if (p.inv_mass[i] == 0.0) continue;  // fixed particles do not feel walls
     for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
