@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <limits>
 
 #include "talus/io/checkpoint_file.h"
 #include "talus/io/hdf5_file.h"
@@ -44,6 +45,8 @@ TEST(CheckpointFile, WorldStateRoundTripsBitForBit) {
   c.world.walls[1].motion.kind = WallMotion::Kind::accelerated;  // motions and odd numbers survive too
   c.world.walls[1].motion.acceleration = 43.0 / 3.0;
   c.world.walls[1].motion.start_time = 0.1;
+  c.world.walls[2].motion.kind = WallMotion::Kind::accelerated;  // a gate not opened yet starts at +inf
+  c.world.walls[2].motion.start_time = std::numeric_limits<double>::infinity();
   io::write_checkpoint(dir / "c.h5", c);
   const io::Checkpoint back = io::read_checkpoint(dir / "c.h5");
   EXPECT_GT(testing::live_springs(c.world.pair_memory), 0u);
@@ -55,6 +58,7 @@ TEST(CheckpointFile, WorldStateRoundTripsBitForBit) {
   ASSERT_EQ(back.world.walls.size(), c.world.walls.size());
   EXPECT_EQ(back.world.walls[1].motion.acceleration, 43.0 / 3.0);
   EXPECT_EQ(back.world.walls[1].motion.kind, WallMotion::Kind::accelerated);
+  EXPECT_EQ(back.world.walls[2].motion.start_time, std::numeric_limits<double>::infinity());
   EXPECT_EQ(back.world.walls[4].name, "floor");
   EXPECT_EQ(back.scenario_toml, c.scenario_toml);
   EXPECT_EQ(back.timeseries, c.timeseries);

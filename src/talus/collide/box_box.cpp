@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "talus/collide/manifold.h"
 
@@ -61,6 +62,12 @@ struct SatAxes {
     return true;
   }
 
+  // |a_i x b_j| of edge axis k >= 6, the length its overlap is divided by.
+  double edge_length(int k) const {
+    const int i = (k - 6) / 3, j = (k - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    return std::sqrt(R[i1][j] * R[i1][j] + R[i2][j] * R[i2][j]);
+  }
+
   // World unit normal of axis k, from B to A.
   Vec3 normal(int k) const {
     if (k < 3) return t[k] > 0 ? -a.axis[k] : a.axis[k];
@@ -90,9 +97,8 @@ struct SatAxes {
 BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis) {
   const SatAxes s(a, b);
   const bool warm = warm_axis >= 0 && warm_axis < 15;
-  double o = 0;
   // A gap lasts many steps: the axis that separated last time usually still does.
-  if (warm && s.overlap(warm_axis, &o) && o < 0) return s.result(warm_axis, o, true);
+  if (BoxBoxSat r; warm && box_box_sat_on_axis(a, b, warm_axis, r) && r.separated) return r;
   // Most part pairs in a pile are apart: return at the first separating face axis. The gap
   // reported is then a lower bound of the distance, not the largest one.
   double overlap[15];
@@ -133,8 +139,54 @@ BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis)
     overlap[k] = num[k] / std::sqrt(len2[k]);
     if (overlap[k] < threshold) best = k;
   }
-  if (warm && valid[warm_axis] && overlap[warm_axis] <= overlap[best] * 1.005) best = warm_axis;
+  if (warm && valid[warm_axis] && overlap[warm_axis] <= overlap[best] * 1.005) {
+    BoxBoxSat r;
+    box_box_sat_on_axis(a, b, warm_axis, r);
+    return r;
+  }
   return s.result(best, overlap[best], false);
+}
+
+// Out of line: box_box_sat answers with this same code whenever its answer is the warm axis, so
+// the two agree to the bit and a run gives the same result whether or not it reuses an axis (a
+// restart forgets the budgets).
+[[gnu::noinline]] bool box_box_sat_on_axis(const OrientedBox& a, const OrientedBox& b, int axis, BoxBoxSat& out) {
+  const SatAxes s(a, b);
+  double o = 0;
+  if (!s.overlap(axis, &o)) return false;
+  out = s.result(axis, o, o < 0);
+  return true;
+}
+
+// The overlap on an axis u is o(u) = min(h(u), h(-u)), h the support function of the Minkowski
+// difference A - B. When every point of A moves by at most tau_A and of B by at most tau_B,
+// h changes by at most tau_A + tau_B along a fixed u; when u turns by |du|, h changes by at most
+// |du| max|p| over A - B, with max|p| <= |c_A - c_B| + |h_A| + |h_B|. A face normal turns by
+// at most its box's rotation angle; an edge axis (a_i x b_j) / |a_i x b_j| by at most
+// 2 (theta_A + theta_B) / |a_i x b_j|. With theta_A + theta_B <= turn_per_travel times the
+// travel, each overlap changes by at most slope_k times the travel. box_box_sat keeps its warm
+// axis w while o_w <= 1.005 min_k o_k, so it is sure to keep w while, for every other axis k,
+// (o_w + slope_w T) / 1.005 <= o_k - slope_k T.
+double box_box_axis_reserve(const OrientedBox& a, const OrientedBox& b, int axis, double turn_per_travel) {
+  const SatAxes s(a, b);
+  double overlap[15], length[15];
+  for (int k = 0; k < 15; ++k) {
+    if (!s.overlap(k, &overlap[k])) return 0;  // parallel edges: an axis with no bound, re-test every step
+    length[k] = k < 6 ? 1.0 : s.edge_length(k);
+  }
+  const double ha = norm(a.half), hb = norm(b.half);
+  const double spread = norm(b.centre - a.centre) + ha + hb;
+  const double rounding = 1e-9 * (ha + hb);  // the AbsR bias and round-off, far above both
+  auto slope = [&](int k) { return 1 + spread * turn_per_travel * (k < 6 ? 1.0 : 2.0 / length[k]); };
+  constexpr double kKeep = 1 / 1.005;
+  const double kept = kKeep * overlap[axis], kept_slope = kKeep * slope(axis);
+  double reserve = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 15; ++k) {
+    if (k == axis) continue;
+    const double margin = overlap[k] - kept - rounding * (1 + 1 / length[k]);
+    reserve = std::min(reserve, margin / (slope(k) + kept_slope));
+  }
+  return std::max(reserve, 0.0);
 }
 
 BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, int warm_axis) {

@@ -26,6 +26,14 @@ BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis 
 BoxBoxSat box_box_sat(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                       int warm_axis = -1);
 
+// A lasting contact keeps its SAT axis (cached separating axes): box_box_axis_reserve bounds how
+// far the two boxes may move (the sum of both boxes' largest point displacements, m) before any
+// other axis could displace `axis` from what box_box_sat(a, b, axis) returns, given that the two
+// rotation angles sum to at most turn_per_travel (rad/m) times that motion. Until then
+// box_box_sat_on_axis gives the same answer from that axis alone (false: the axis is degenerate).
+double box_box_axis_reserve(const OrientedBox& a, const OrientedBox& b, int axis, double turn_per_travel);
+bool box_box_sat_on_axis(const OrientedBox& a, const OrientedBox& b, int axis, BoxBoxSat& out);
+
 PartContact box_box_contact(const OrientedBox& a, const OrientedBox& b, ContactCache* warm = nullptr);
 PartContact box_box_contact(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                             ContactCache* warm = nullptr);

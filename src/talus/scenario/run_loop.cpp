@@ -215,6 +215,12 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   summary["steps_per_second"] = outcome.wall_seconds > 0 ? steps_run / outcome.wall_seconds : 0.0;
   summary["threads"] = omp_get_max_threads();
   summary["neighbour_rebuilds"] = world.rebuilds();
+  // Where the wall time of this process went, by phase of the step (s); the rest is output,
+  // analyses and the run loop.
+  nlohmann::json phases = nlohmann::json::object();
+  for (int k = 0; k < static_cast<int>(Phase::count); ++k)
+    phases[phase_name(static_cast<Phase>(k))] = world.timer().seconds(static_cast<Phase>(k));
+  summary["phase_seconds"] = phases;
   summary["derived"] = sc.derived;
   summary["checkpoints"] = {{"written", checkpoints.written()},
                             {"latest", CheckpointSeries::latest(opt.out).string()},

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -57,18 +58,41 @@ int sat_axis_of(std::uint32_t feature) {
   return -1;
 }
 
+// How a part pair has moved since it was last looked at, for the cached SAT axis.
+struct PairMotion {
+  double travelled;        ///< m, sum of the two bodies' travels (PlacedBodies::travel)
+  double turn_per_travel;  ///< rad/m, bound on the two rotation angles per metre of travel
+};
+
+// The SAT of two touching boxes. A lasting contact reuses last step's axis, tested alone, while
+// its budget proves no other axis can have taken over; the full test renews the budget.
+BoxBoxSat lasting_box_sat(const PlacedPart& pa, const PlacedPart& pb, int warm_axis, const PairMotion& motion,
+                          AxisBudget& budget) {
+  BoxBoxSat sat;
+  if (warm_axis >= 0 && warm_axis == budget.axis && motion.travelled < budget.until &&
+      box_box_sat_on_axis(pa.box, pb.box, warm_axis, sat))
+    return sat;
+  sat = box_box_sat(pa.box, pb.box, warm_axis);
+  budget.axis = sat.separated ? -1 : sat.axis;
+  if (!sat.separated)
+    budget.until = motion.travelled + box_box_axis_reserve(pa.box, pb.box, sat.axis, motion.turn_per_travel);
+  return sat;
+}
+
 // Contact points of two placed convex parts: a manifold, or the single deepest point.
 // `previous` is this part pair's contact of last step (or null), for the warm start. With no
 // point, *gap is a lower bound of the parts' distance when the test found one, else 0.
 int part_points(const ConvexShape& a, const PlacedPart& pa, const ConvexShape& b, const PlacedPart& pb, bool manifold,
-                const SubContact* previous, PointGeometry out[4], double* gap) {
+                const SubContact* previous, const PairMotion& motion, AxisBudget& axis_budget, PointGeometry out[4],
+                double* gap) {
   *gap = 0;
   ContactCache warm;
   if (previous) warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
   if (manifold) {
     ContactManifold m;
     if (pa.is_box && pb.is_box) {
-      const BoxBoxSat sat = box_box_sat(pa.box, pb.box, previous ? sat_axis_of(previous->feature) : -1);
+      const BoxBoxSat sat =
+          lasting_box_sat(pa, pb, previous ? sat_axis_of(previous->feature) : -1, motion, axis_budget);
       if (sat.separated) {
         *gap = -sat.depth;
         return 0;
@@ -184,7 +208,7 @@ void prefetch_lines(const void* data, std::size_t bytes) {
 
 template <TangentialModel Model>
 ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt,
-                                    double travelled, double* part_budget, double& gap) {
+                                    double travelled, double* part_budget, AxisBudget* axis_budget, double& gap) {
   gap = 0;
   const bool profile = composite_stats_enabled();
   const std::uint64_t t_start = ticks(profile);
@@ -213,6 +237,8 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   const double reduced_mass = 1.0 / (p.inv_mass[i] + p.inv_mass[j]);
   const double reduced_radius = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
   const ContactMotion motion{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
+  // A body turning by theta moves a point at its bounding radius R by 2 R sin(theta / 2) >= 2 R theta / pi.
+  const PairMotion pair_motion{travelled, 0.5 * std::numbers::pi / std::min(p.radius[i], p.radius[j])};
   const bool had_contacts = !contacts.empty();
   const SubContactList& previous = previous_scratch(contacts);
 
@@ -247,7 +273,8 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       PointGeometry points[4];
       double part_gap = 0;
       const int n = part_points(si.parts[a].shape, pa, sj.parts[b].shape, pb, settings_.contact_manifold,
-                                had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, points, &part_gap);
+                                had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, pair_motion,
+                                axis_budget[a * nj + b], points, &part_gap);
       least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
       if (n == 0 && part_gap > 0) budget = travelled + part_gap;
       const std::uint64_t t2 = ticks(profile);
@@ -398,7 +425,8 @@ void World::composite_pair_forces(double memory_dt) {
           ContactResult r;
           if (p.shape[i] != 0 || p.shape[j] != 0) {
             double gap = 0;
-            r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, travelled, budgets_.parts(e), gap);
+            r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, travelled, budgets_.parts(e), budgets_.axes(e),
+                                      gap);
             if (pair_sub_[e].empty()) {
               budget[e] = travelled + gap;
               continue;
@@ -427,7 +455,7 @@ void World::composite_pair_forces(double memory_dt) {
 
 #define TALUS_INSTANTIATE(M)                                                                                  \
   template ContactResult World::composite_pair<M>(std::size_t, std::size_t, SubContactList&, double, double, double*, \
-                                                  double&);                                                   \
+                                                  AxisBudget*, double&);                                      \
   template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&, SubContactList&, double); \
   template void World::composite_pair_forces<M>(double);
 TALUS_INSTANTIATE(TangentialModel::memory)

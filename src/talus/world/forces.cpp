@@ -15,7 +15,10 @@ namespace talus {
 void World::compute_forces(double memory_dt) {
   ParticleStore& p = particles_;
   if (has_composites()) {
-    placed_.place(p, shapes_);
+    {
+      ScopedPhase phase(timer_, Phase::placement);
+      placed_.place(p, shapes_);
+    }
     with_tangential_model(settings_.tangential_model, [&](auto model) { composite_pair_forces<model.value>(memory_dt); });
   } else {
     with_tangential_model(settings_.tangential_model, [&](auto model) { pair_forces<model.value>(memory_dt); });

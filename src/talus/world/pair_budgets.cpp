@@ -17,6 +17,7 @@ void PairBudgets::reset(const PairList& list, const ParticleStore& p, const std:
     }
   part_begin_[list.entries()] = n;
   part_.assign(n, 0.0);
+  axis_.assign(n, AxisBudget{});
 }
 
 }  // namespace talus

@@ -5,7 +5,13 @@
 
 namespace talus {
 
-enum class Phase { integrate, neighbors, pair_forces, wall_forces, count };
+enum class Phase { integrate, neighbors, pair_forces, wall_forces, placement, count };
+
+// The name each phase has in a run's summary.json.
+inline const char* phase_name(Phase p) {
+  constexpr const char* kNames[] = {"integrate", "neighbours", "pair_forces", "wall_forces", "placement"};
+  return kNames[static_cast<int>(p)];
+}
 
 class PhaseTimer {
  public:

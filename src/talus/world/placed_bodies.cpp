@@ -8,12 +8,13 @@
 namespace talus {
 
 // Writes every field in place: the parts of all bodies are placed each step, and building a
-// temporary then copying it (216 bytes a part) cost a memset and a memmove per part.
+// temporary then copying it (216 bytes a part) cost a memset and a memmove per part. The pose
+// is never assembled as a Pose either: the compiler spilled it to the stack and read it back
+// with wider loads than it had stored, and each such read waited for the store queue to drain.
 void place_part(const CompositePart& part, const Pose& body, PlacedPart& p) {
-  const Pose pose = body * part.pose;
-  p.orientation = pose.orientation;
-  rotation_axes(pose.orientation, p.box.axis);
-  p.box.centre = pose.position;
+  p.orientation = body.orientation * part.pose.orientation;
+  p.box.centre = body.to_parent(part.pose.position);
+  rotation_axes(p.orientation, p.box.axis);
   const Vec3 c = part.capsule.half_axis;
   p.capsule_axis = p.box.axis[0] * c.x + p.box.axis[1] * c.y + p.box.axis[2] * c.z;
   p.capsule_radius = part.capsule.radius;
@@ -24,17 +25,18 @@ void place_part(const CompositePart& part, const Pose& body, PlacedPart& p) {
 
 void PlacedBodies::place(const ParticleStore& p, const std::vector<CompositeShape>& shapes) {
   const std::size_t n = p.position.size();
-  offset_.resize(n + 1);
-  std::uint32_t parts = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    offset_[i] = parts;
-    if (p.shape[i] != 0) parts += static_cast<std::uint32_t>(shapes[p.shape[i]].parts.size());
-  }
-  offset_[n] = parts;
-  bodies_.resize(n);
-  parts_.resize(parts);
   const bool restart = restart_travel_ || travel_.size() != n;
   if (restart) {
+    // Particles are added, removed or reordered only at a rebuild: the layout holds till the next.
+    offset_.resize(n + 1);
+    std::uint32_t parts = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      offset_[i] = parts;
+      if (p.shape[i] != 0) parts += static_cast<std::uint32_t>(shapes[p.shape[i]].parts.size());
+    }
+    offset_[n] = parts;
+    bodies_.resize(n);
+    parts_.resize(parts);
     last_position_.assign(p.position.begin(), p.position.end());
     last_orientation_.assign(p.orientation.begin(), p.orientation.end());
     travel_.assign(n, 0.0);

@@ -39,6 +39,10 @@ struct Wall {
   bool active(double t) const {
     return !(motion.kind == WallMotion::Kind::removed && t >= motion.start_time);
   }
+  // A moving rectangle slides in its plane too, uncovering and covering particles: its contact
+  // list holds every particle near its plane, and only its motion along the normal uses up the
+  // neighbour-list skin (WallContactList::build, World::needs_rebuild).
+  bool moves() const { return motion.kind == WallMotion::Kind::accelerated; }
   Vec3 origin_at(double t) const { return origin + motion.direction * motion.displacement(t); }
   Vec3 velocity_at(double t) const { return motion.direction * motion.speed(t); }
 };

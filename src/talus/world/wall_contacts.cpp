@@ -21,11 +21,8 @@ void WallContactList::build(const ParticleStore& p, const std::vector<Wall>& wal
       if (!wall.active(time)) continue;
       const Vec3 origin = wall.origin_at(time);
       const double d = dot(p.position[i] - origin, wall.normal);
-      // A moving rectangle slides in its plane too, uncovering and covering particles: it lists
-      // every particle near its plane, so only its motion along the normal uses up the skin.
-      const bool rectangle_fixed = wall.motion.kind != WallMotion::Kind::accelerated;
       if (d < p.radius[i] + skin && (!wall.bounded || d > -skin) &&
-          (!rectangle_fixed || wall_faces(wall, origin, p.position[i], p.radius[i] + skin)))
+          (wall.moves() || wall_faces(wall, origin, p.position[i], p.radius[i] + skin)))
         wall_.push_back(static_cast<std::int32_t>(w));
     }
     row_[i + 1] = static_cast<std::uint32_t>(wall_.size());

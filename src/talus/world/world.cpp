@@ -115,7 +115,7 @@ bool World::needs_rebuild() const {
   double wall_move = 0;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     if (static_cast<char>(walls_[w].active(time_)) != wall_active_at_build_[w]) return true;
-    // Only the normal motion counts: a sliding rectangle lists all particles near its plane.
+    if (!walls_[w].moves()) continue;  // Wall::moves: only the normal motion counts
     const Vec3 moved = walls_[w].origin_at(time_) - wall_origin_at_build_[w];
     wall_move = std::max(wall_move, std::abs(dot(moved, walls_[w].normal)));
   }
