@@ -79,6 +79,14 @@ BoxBoxSat lasting_box_sat(const PlacedPart& pa, const PlacedPart& pb, int warm_a
   return sat;
 }
 
+// The points of a manifold that overlap, as contact geometry.
+int touching_points(const ContactManifold& m, PointGeometry out[4]) {
+  int n = 0;
+  for (int k = 0; k < m.count; ++k)
+    if (m.points[k].delta_n > 0) out[n++] = {m.normal, m.points[k].point, m.points[k].delta_n, m.points[k].feature_id};
+  return n;
+}
+
 // Contact points of two placed convex parts: a manifold, or the single deepest point.
 // `previous` is this part pair's contact of last step (or null), for the warm start. With no
 // point, *gap is a lower bound of the parts' distance when the test found one, else 0.
@@ -89,7 +97,8 @@ int part_points(const ConvexShape& a, const PlacedPart& pa, const ConvexShape& b
   ContactCache warm;
   if (previous) warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
   if (manifold) {
-    ContactManifold m;
+    // The manifold is read where it was returned: declaring it first and assigning it cost a
+    // memset and a memmove of its ~400 bytes per touching part pair.
     if (pa.is_box && pb.is_box) {
       const BoxBoxSat sat =
           lasting_box_sat(pa, pb, previous ? sat_axis_of(previous->feature) : -1, motion, axis_budget);
@@ -97,14 +106,9 @@ int part_points(const ConvexShape& a, const PlacedPart& pa, const ConvexShape& b
         *gap = -sat.depth;
         return 0;
       }
-      m = box_box_manifold(pa.box, pb.box, sat);
-    } else {
-      m = contact_manifold(a, pa.pose(), b, pb.pose(), &warm);
+      return touching_points(box_box_manifold(pa.box, pb.box, sat), out);
     }
-    int n = 0;
-    for (int k = 0; k < m.count; ++k)
-      if (m.points[k].delta_n > 0) out[n++] = {m.normal, m.points[k].point, m.points[k].delta_n, m.points[k].feature_id};
-    return n;
+    return touching_points(contact_manifold(a, pa.pose(), b, pb.pose(), &warm), out);
   }
   const PartContact c = narrow_phase(a, pa.pose(), b, pb.pose(), &warm);
   if (!c.touching || !(c.delta_n > 0)) return 0;
@@ -342,9 +346,7 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
     PointGeometry points[4];
     int n = 0;
     if (settings_.contact_manifold) {
-      const ContactManifold m = convex_plane_manifold(si.parts[a].shape, pa, plane);
-      for (int k = 0; k < m.count; ++k)
-        if (m.points[k].delta_n > 0) points[n++] = {m.normal, m.points[k].point, m.points[k].delta_n, m.points[k].feature_id};
+      n = touching_points(convex_plane_manifold(si.parts[a].shape, pa, plane), points);
     } else {
       const PartContact c = convex_plane_contact(si.parts[a].shape, pa, plane);
       if (c.touching && c.delta_n > 0) points[n++] = {c.normal, c.point, c.delta_n, 0};
