@@ -1,14 +1,13 @@
 #include "talus/io/checkpoint_file.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <stdexcept>
 
 #include "talus/io/atomic_file.h"
 #include "talus/io/flat_arrays.h"
 #include "talus/io/hdf5_file.h"
 #include "talus/io/input_error.h"
+#include "talus/io/json_file.h"
 
 namespace talus::io {
 
@@ -21,11 +20,6 @@ constexpr const char* kFormat = "talus-checkpoint";
 nlohmann::json vec_json(const Vec3& v) { return {v.x, v.y, v.z}; }
 Vec3 json_vec(const nlohmann::json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()}; }
 
-// JSON has no infinity: a motion that has not been scheduled yet (a gate the dam-break observer
-// opens once the column is static) starts at +inf, written as null.
-nlohmann::json time_json(double t) { return std::isinf(t) && t > 0 ? nlohmann::json(nullptr) : nlohmann::json(t); }
-double json_time(const nlohmann::json& j) { return j.is_null() ? std::numeric_limits<double>::infinity() : j.get<double>(); }
-
 nlohmann::json walls_json(const std::vector<Wall>& walls) {
   nlohmann::json out = nlohmann::json::array();
   for (const Wall& w : walls) {
@@ -34,7 +28,7 @@ nlohmann::json walls_json(const std::vector<Wall>& walls) {
                    {"material", w.material}, {"bounded", w.bounded}, {"axis_u", vec_json(w.axis_u)},
                    {"axis_v", vec_json(w.axis_v)}, {"half_extent_u", w.half_extent_u},
                    {"half_extent_v", w.half_extent_v}, {"motion_kind", static_cast<int>(m.kind)},
-                   {"motion_start_time", time_json(m.start_time)}, {"motion_direction", vec_json(m.direction)},
+                   {"motion_start_time", time_or_null(m.start_time)}, {"motion_direction", vec_json(m.direction)},
                    {"motion_acceleration", m.acceleration}, {"motion_top_speed", m.top_speed}});
   }
   return out;
@@ -57,7 +51,7 @@ std::vector<Wall> json_walls(const nlohmann::json& j) {
     if (kind < 0 || kind > static_cast<int>(WallMotion::Kind::accelerated))
       throw std::runtime_error("unknown wall motion " + std::to_string(kind));
     wall.motion.kind = static_cast<WallMotion::Kind>(kind);
-    wall.motion.start_time = json_time(w.at("motion_start_time"));
+    wall.motion.start_time = null_or_time(w.at("motion_start_time"));  // +inf: not opened yet
     wall.motion.direction = json_vec(w.at("motion_direction"));
     wall.motion.acceleration = w.at("motion_acceleration").get<double>();
     wall.motion.top_speed = w.at("motion_top_speed").get<double>();

@@ -1,6 +1,8 @@
 #pragma once
 // summary.json and other JSON results, written atomically (see atomic_file.h).
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 namespace talus::io {
@@ -12,5 +14,11 @@ namespace talus::io {
 void write_json(const std::filesystem::path& path, const nlohmann::json& value, int indent = 2);
 // Throws std::runtime_error naming the file when it cannot be read or is not JSON.
 nlohmann::json read_json(const std::filesystem::path& path);
+
+// A time that may be "never" (+inf), which JSON cannot hold: written as null, read back as +inf.
+inline nlohmann::json time_or_null(double t) { return std::isfinite(t) ? nlohmann::json(t) : nlohmann::json(); }
+inline double null_or_time(const nlohmann::json& j) {
+  return j.is_null() ? std::numeric_limits<double>::infinity() : j.get<double>();
+}
 
 }  // namespace talus::io

@@ -3,18 +3,9 @@
 #include <cmath>
 
 #include "talus/io/input_error.h"
+#include "talus/io/json_file.h"
 
 namespace talus {
-
-namespace {
-
-// JSON has no infinity: "no further checkpoint" is null.
-nlohmann::json time_or_null(double t) { return std::isfinite(t) ? nlohmann::json(t) : nlohmann::json(); }
-double null_or_time(const nlohmann::json& j) {
-  return j.is_null() ? std::numeric_limits<double>::infinity() : j.get<double>();
-}
-
-}  // namespace
 
 io::Checkpoint capture_checkpoint(Scenario& sc, const LoopState& loop, const std::string& scenario_toml,
                                   const std::vector<std::string>& columns) {
@@ -29,7 +20,7 @@ io::Checkpoint capture_checkpoint(Scenario& sc, const LoopState& loop, const std
   for (const auto& o : sc.observers) observers.push_back({{"name", o->name()}, {"state", o->state()}});
   c.run = {{"next_output", loop.next_output},
            {"next_frame", loop.next_frame},
-           {"next_checkpoint", time_or_null(loop.next_checkpoint)},
+           {"next_checkpoint", io::time_or_null(loop.next_checkpoint)},
            {"vtk_times", loop.vtk_times},
            {"next_snapshot", loop.next_snapshot},
            {"snapshots", loop.snapshots},
@@ -65,7 +56,7 @@ LoopState restore_checkpoint(Scenario& sc, const io::Checkpoint& c, const std::s
     LoopState loop;
     loop.next_output = c.run.at("next_output").get<double>();
     loop.next_frame = c.run.at("next_frame").get<double>();
-    loop.next_checkpoint = null_or_time(c.run.at("next_checkpoint"));
+    loop.next_checkpoint = io::null_or_time(c.run.at("next_checkpoint"));
     loop.vtk_times = c.run.at("vtk_times").get<std::vector<double>>();
     loop.next_snapshot = c.run.value("next_snapshot", 0.0);
     loop.snapshots = c.run.value("snapshots", std::size_t{0});
