@@ -90,10 +90,13 @@ ContactManifold box_box_manifold(const OrientedBox& a, const OrientedBox& b, con
   const Vec3 c = inc.centre + inc.axis[ik] * (sgn * inc.half[ik]);
   const Vec3 u = inc.axis[k1] * inc.half[k1], v = inc.axis[k2] * inc.half[k2];
   // Vertex q lies on edges q-1 and q (edge q joins vertex q to q+1).
-  ClipVertex buffers[2][kMaxClip] = {{{c + u + v, 0b1001u, 0}, {c - u + v, 0b0011u, 0},
-                                      {c - u - v, 0b0110u, 0}, {c + u - v, 0b1100u, 0}}};
-  ClipVertex* poly = buffers[0];
-  ClipVertex* next = buffers[1];
+  UninitializedArray<ClipVertex, 2 * kMaxClip> buffers;
+  ClipVertex* poly = buffers.data();
+  ClipVertex* next = buffers.data() + kMaxClip;
+  poly[0] = {c + u + v, 0b1001u, 0};
+  poly[1] = {c - u + v, 0b0011u, 0};
+  poly[2] = {c - u - v, 0b0110u, 0};
+  poly[3] = {c + u - v, 0b1100u, 0};
   int count = 4;
 
   // Side planes of the reference face: dot(s, x) <= w.
@@ -120,7 +123,7 @@ ContactManifold box_box_manifold(const OrientedBox& a, const OrientedBox& b, con
     }
   }
 
-  ManifoldPoint pts[kMaxClip];
+  UninitializedArray<ManifoldPoint, kMaxClip> pts;
   int n = 0;
   for (int q = 0; q < count; ++q) {
     const ClipVertex& cv = poly[q];
@@ -131,7 +134,7 @@ ContactManifold box_box_manifold(const OrientedBox& a, const OrientedBox& b, con
                              cv.edges << 8 | cv.planes;
     pts[n++] = ref_is_a ? make_point(on_ref, cv.p, depth, id) : make_point(cv.p, on_ref, depth, id);
   }
-  return reduce(pts, static_cast<std::size_t>(n), sat.normal, ContactMethod::kBoxBoxSat);
+  return reduce(pts.data(), static_cast<std::size_t>(n), sat.normal, ContactMethod::kBoxBoxSat);
 }
 
 ContactManifold box_box_manifold(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, const BoxBoxSat& sat) {
@@ -142,14 +145,14 @@ ContactManifold convex_plane_manifold(const ConvexShape& a, const Pose& pa, cons
   if (const Box* b = std::get_if<Box>(&a.geometry)) {
     // Eight corners on the stack: a wall contact of a box costs no heap.
     const Vec3 h = b->half_extents;
-    ManifoldPoint pts[8];
+    UninitializedArray<ManifoldPoint, 8> pts;
     std::size_t n = 0;
     for (int k = 0; k < 8; ++k) {
       const Vec3 x = pa.to_parent({k & 1 ? h.x : -h.x, k & 2 ? h.y : -h.y, k & 4 ? h.z : -h.z});
       const double depth = plane.offset - dot(plane.normal, x);
       if (depth > 0) pts[n++] = make_point(x, x + plane.normal * depth, depth, static_cast<std::uint32_t>(k));
     }
-    return reduce(pts, n, plane.normal, ContactMethod::kPlane);
+    return reduce(pts.data(), n, plane.normal, ContactMethod::kPlane);
   }
   if (const ConvexPolyhedron* p = std::get_if<ConvexPolyhedron>(&a.geometry)) {
     std::vector<ManifoldPoint> pts;

@@ -18,6 +18,7 @@
 #include <cstdint>
 
 #include "talus/collide/box_box.h"
+#include "talus/math/uninitialized_array.h"
 #include "talus/collide/convex_contact.h"
 #include "talus/collide/convex_contact_analytic.h"
 
@@ -34,7 +35,7 @@ struct ManifoldPoint {
 struct ContactManifold {
   Vec3 normal;  ///< unit, from B to A, shared by all points
   int count = 0;
-  std::array<ManifoldPoint, 4> points;
+  UninitializedArray<ManifoldPoint, 4> points;  ///< [0, count) are set
   ContactMethod method = ContactMethod::kNone;
 };
 

@@ -24,10 +24,12 @@ DamBreakSetup read_dam_break(const io::ScenarioFile& f) {
   s.gate_acceleration = f.get_or<double>("dam_break.gate_acceleration", s.gate_acceleration, io::positive);
   s.gate_top_speed = f.get_or<double>("dam_break.gate_top_speed", s.gate_top_speed, io::positive);
   s.static_speed = f.get_or<double>("dam_break.static_speed", s.static_speed, io::positive);
+  s.static_mean_speed = f.get_or<double>("dam_break.static_mean_speed", s.static_mean_speed, io::positive);
   s.settle_min_time = f.get_or<double>("dam_break.settle_min_time", s.settle_min_time, io::non_negative);
   s.settle_max_time = f.get_or<double>("dam_break.settle_max_time", s.settle_max_time, io::positive);
   if (s.settle_max_time < s.settle_min_time) f.fail("dam_break.settle_max_time", "must not be below settle_min_time");
   s.stop_speed = f.get_or<double>("dam_break.stop_speed", s.stop_speed, io::positive);
+  s.stop_mean_speed = f.get_or<double>("dam_break.stop_mean_speed", s.stop_mean_speed, io::positive);
   s.collapse_min_time = f.get_or<double>("dam_break.collapse_min_time", s.collapse_min_time, io::non_negative);
   s.pixel = f.get_or<double>("dam_break.pixel", s.pixel, io::positive);
   return s;

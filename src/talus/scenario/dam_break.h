@@ -8,6 +8,7 @@
 // or the particle count is one --set. The phases and measurements are a RunObserver
 // (dam_break_observer.h).
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -31,9 +32,11 @@ struct DamBreakSetup {
   double gate_acceleration = 43;  ///< m/s^2
   double gate_top_speed = 3;    ///< m/s
   double static_speed = 1e-3;   ///< m/s: the column is static once no particle is faster
+  double static_mean_speed = std::numeric_limits<double>::infinity();  ///< m/s: ... and the mean speed is below
   double settle_min_time = 0.05;  ///< s, before the static test
   double settle_max_time = 3;   ///< s: the gate opens then even if the column still moves
   double stop_speed = 5e-3;     ///< m/s: the collapse is over once no particle is faster
+  double stop_mean_speed = std::numeric_limits<double>::infinity();  ///< m/s: ... and the mean speed is below
   double collapse_min_time = 0.1; ///< s after the gate opened, before the stop test
   double pixel = 0.43e-3;       ///< m, top-view pixel (Sec. III C camera)
 };

@@ -88,7 +88,7 @@ void DamBreakObserver::start(World& world, const std::filesystem::path& out) {
 bool DamBreakObserver::output(World& world, const Diagnostics& d) {
   if (phase_ == Phase::settling) {
     const double t = world.time();
-    if (t >= setup_.settle_min_time && d.max_speed < setup_.static_speed)
+    if (t >= setup_.settle_min_time && d.max_speed < setup_.static_speed && d.mean_speed < setup_.static_mean_speed)
       open_gate(world, d, true);
     else if (t >= setup_.settle_max_time)
       open_gate(world, d, false);
@@ -100,7 +100,8 @@ bool DamBreakObserver::output(World& world, const Diagnostics& d) {
   const collapse::ScaledSpeeds scaled = collapse::scaled_speeds(now, initial_height_, gate_time_);
   speeds_.push_back({world.time() - gate_time_, scaled.time, mean.translational, mean.angular, scaled.translational,
                      scaled.angular});
-  if (world.time() - gate_time_ >= setup_.collapse_min_time && d.max_speed < setup_.stop_speed) {
+  if (world.time() - gate_time_ >= setup_.collapse_min_time && d.max_speed < setup_.stop_speed &&
+      d.mean_speed < setup_.stop_mean_speed) {
     phase_ = Phase::over;
     return true;
   }

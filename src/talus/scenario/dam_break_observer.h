@@ -1,9 +1,11 @@
 #pragma once
 // The phases of a dam-break run and what it measures (Huet et al. 2021, Secs. III-IV):
 //   settling   the column falls into place behind the closed gate; it is static once the
-//              fastest particle is slower than static_speed (or settle_max_time has passed);
+//              mean particle speed is below static_mean_speed and the fastest particle is slower
+//              than static_speed (or settle_max_time has passed);
 //   collapsing the gate opens (t = 0 of the paper); mean speeds are recorded (Figs. 12-13);
-//   over       no particle is faster than stop_speed: the run ends.
+//   over       the mean speed is below stop_mean_speed and no particle is faster than
+//              stop_speed: the run ends.
 // Before the gate opens: coordination and wall contacts (Table III), force PDF (Fig. 15),
 // fabric (Figs. 16-17), Janssen shares, the force network (Fig. 14). At the end: runout with
 // its error bar, heights with quartiles, centre-of-mass shift, regime (Sec. III C, App. C).

@@ -13,7 +13,6 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -21,6 +20,7 @@
 #include "talus/collide/convex_contact.h"
 #include "talus/collide/convex_contact_analytic.h"
 #include "talus/collide/manifold.h"
+#include "talus/math/uninitialized_array.h"
 #include "talus/world/composite_stats.h"
 #include "talus/world/memory_ref.h"
 #include "talus/world/parallel.h"
@@ -223,11 +223,11 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   const CompositeShape& si = has_box_i ? shapes_[p.shape[i]] : shape_of(shapes_, 0, p.radius[i], scratch_i);
   const CompositeShape& sj = has_box_j ? shapes_[p.shape[j]] : shape_of(shapes_, 0, p.radius[j], scratch_j);
   // A sphere has no box and no entry in the placement cache: one part at its centre.
-  std::optional<PlacedPart> sphere_i, sphere_j;
-  if (!has_box_i) place_part(si.parts[0], {p.position[i], p.orientation[i]}, sphere_i.emplace());
-  if (!has_box_j) place_part(sj.parts[0], {p.position[j], p.orientation[j]}, sphere_j.emplace());
-  const PlacedPart* placed_i = has_box_i ? placed_.parts(i) : &*sphere_i;
-  const PlacedPart* placed_j = has_box_j ? placed_.parts(j) : &*sphere_j;
+  UninitializedArray<PlacedPart, 1> sphere_i, sphere_j;
+  if (!has_box_i) place_part(si.parts[0], {p.position[i], p.orientation[i]}, sphere_i[0]);
+  if (!has_box_j) place_part(sj.parts[0], {p.position[j], p.orientation[j]}, sphere_j[0]);
+  const PlacedPart* placed_i = has_box_i ? placed_.parts(i) : sphere_i.data();
+  const PlacedPart* placed_j = has_box_j ? placed_.parts(j) : sphere_j.data();
   if (has_box_i && has_box_j && (gap = body_box_gap(si, placed_.body(i), sj, placed_.body(j))) > 0) {
     if (!contacts.empty()) contacts.clear();
     if (profile) {
@@ -274,11 +274,11 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       const std::uint64_t t1 = ticks(profile);
       t_cull += t1 - t0;
       const auto part_a = static_cast<std::uint16_t>(a), part_b = static_cast<std::uint16_t>(b);
-      PointGeometry points[4];
+      UninitializedArray<PointGeometry, 4> points;
       double part_gap = 0;
       const int n = part_points(si.parts[a].shape, pa, sj.parts[b].shape, pb, settings_.contact_manifold,
                                 had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, pair_motion,
-                                axis_budget[a * nj + b], points, &part_gap);
+                                axis_budget[a * nj + b], points.data(), &part_gap);
       least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
       if (n == 0 && part_gap > 0) budget = travelled + part_gap;
       const std::uint64_t t2 = ticks(profile);
@@ -343,10 +343,10 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
       if (dot(box.centre, plane.normal) - plane.offset - reach > 1e-9 * si.parts[a].shape.bounding_radius) continue;
     }
     const Pose pa = placed[a].pose();
-    PointGeometry points[4];
+    UninitializedArray<PointGeometry, 4> points;
     int n = 0;
     if (settings_.contact_manifold) {
-      n = touching_points(convex_plane_manifold(si.parts[a].shape, pa, plane), points);
+      n = touching_points(convex_plane_manifold(si.parts[a].shape, pa, plane), points.data());
     } else {
       const PartContact c = convex_plane_contact(si.parts[a].shape, pa, plane);
       if (c.touching && c.delta_n > 0) points[n++] = {c.normal, c.point, c.delta_n, 0};
