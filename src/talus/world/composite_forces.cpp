@@ -7,6 +7,7 @@
 // distance), and only the survivors run the narrow phase, warm-started from the contact they
 // made last step (SAT axis from the manifold feature id, GJK direction from the previous
 // normal). No heap traffic once the per-entry lists have grown.
+#include <omp.h>
 #include <x86intrin.h>
 
 #include <algorithm>
@@ -90,9 +91,9 @@ int touching_points(const ContactManifold& m, PointGeometry out[4]) {
 // Contact points of two placed convex parts: a manifold, or the single deepest point.
 // `previous` is this part pair's contact of last step (or null), for the warm start. With no
 // point, *gap is a lower bound of the parts' distance when the test found one, else 0.
-int part_points(const ConvexShape& a, const PlacedPart& pa, const ConvexShape& b, const PlacedPart& pb, bool manifold,
-                const SubContact* previous, const PairMotion& motion, AxisBudget& axis_budget, PointGeometry out[4],
-                double* gap) {
+int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a, const CompositePart& b,
+                const PlacedPart& pb, const Quat& body_b, bool manifold, const SubContact* previous,
+                const PairMotion& motion, AxisBudget& axis_budget, PointGeometry out[4], double* gap) {
   *gap = 0;
   ContactCache warm;
   if (previous) warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
@@ -108,9 +109,10 @@ int part_points(const ConvexShape& a, const PlacedPart& pa, const ConvexShape& b
       }
       return touching_points(box_box_manifold(pa.box, pb.box, sat), out);
     }
-    return touching_points(contact_manifold(a, pa.pose(), b, pb.pose(), &warm), out);
+    return touching_points(
+        contact_manifold(a.shape, part_pose(pa, a, body_a), b.shape, part_pose(pb, b, body_b), &warm), out);
   }
-  const PartContact c = narrow_phase(a, pa.pose(), b, pb.pose(), &warm);
+  const PartContact c = narrow_phase(a.shape, part_pose(pa, a, body_a), b.shape, part_pose(pb, b, body_b), &warm);
   if (!c.touching || !(c.delta_n > 0)) return 0;
   out[0] = {c.normal, c.point, c.delta_n, 0};
   return 1;
@@ -262,8 +264,10 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       }
       const PlacedPart& pb = placed_j[b];
       ++n_parts;
-      const double d2 = segment_distance2(pa.box.centre, pa.capsule_axis, pb.box.centre, pb.capsule_axis);
-      const double reach = pa.capsule_radius + pb.capsule_radius;
+      const CompositePart &shape_a = si.parts[a], &shape_b = sj.parts[b];
+      const double d2 =
+          segment_distance2(pa.box.centre, capsule_axis(pa, shape_a), pb.box.centre, capsule_axis(pb, shape_b));
+      const double reach = shape_a.capsule.radius + shape_b.capsule.radius;
       if (d2 >= reach * reach) {
         const double capsule_gap = std::sqrt(d2) - reach;
         least_gap = std::min(least_gap, capsule_gap);
@@ -276,7 +280,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       const auto part_a = static_cast<std::uint16_t>(a), part_b = static_cast<std::uint16_t>(b);
       UninitializedArray<PointGeometry, 4> points;
       double part_gap = 0;
-      const int n = part_points(si.parts[a].shape, pa, sj.parts[b].shape, pb, settings_.contact_manifold,
+      const int n = part_points(shape_a, pa, p.orientation[i], shape_b, pb, p.orientation[j], settings_.contact_manifold,
                                 had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, pair_motion,
                                 axis_budget[a * nj + b], points.data(), &part_gap);
       least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
@@ -342,7 +346,7 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
                            box.half.z * std::abs(dot(box.axis[2], plane.normal));
       if (dot(box.centre, plane.normal) - plane.offset - reach > 1e-9 * si.parts[a].shape.bounding_radius) continue;
     }
-    const Pose pa = placed[a].pose();
+    const Pose pa = part_pose(placed[a], si.parts[a], p.orientation[i]);
     UninitializedArray<PointGeometry, 4> points;
     int n = 0;
     if (settings_.contact_manifold) {
@@ -369,9 +373,10 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
 
 // Pairs of rigid bodies cost a culling stage and a narrow phase each, and a pile rarely spans
 // enough slabs for the colouring of pair_forces to keep two threads busy. So rows are taken in
-// blocks, any block by any thread, each block recording what it adds to which body, binned by
-// the body's range of indices. The ranges are then applied in parallel, each block by block:
-// every body receives its contributions in the same order on any number of threads.
+// blocks, each thread keeping its own run of blocks from step to step (block_schedule.h), each
+// block recording what it adds to which body, binned by the body's range of indices. The ranges
+// are then applied in parallel, each block by block: every body receives its contributions in
+// the same order on any number of threads.
 template <TangentialModel Model>
 void World::composite_pair_forces(double memory_dt) {
   ScopedPhase phase(timer_, Phase::pair_forces);
@@ -386,10 +391,13 @@ void World::composite_pair_forces(double memory_dt) {
   double* budget = budgets_.body();
   const std::size_t bodies = p.position.size();  // ghosts receive loads too (folded later)
   auto range_of = [bodies](std::uint32_t body) { return static_cast<std::size_t>(body) * kLoadRanges / bodies; };
-#pragma omp parallel if (worth_parallel(16 * p.owned))
+  const int threads = worth_parallel(16 * p.owned) ? omp_get_max_threads() : 1;
+  block_schedule_.plan(blocks, threads);
+#pragma omp parallel num_threads(threads)
   {
-#pragma omp for schedule(dynamic, 1)
-    for (long block = 0; block < blocks; ++block) {
+    const int thread = omp_get_thread_num();
+    for (long block = 0; block_schedule_.next(thread, block);) {
+      const std::uint64_t block_start = __rdtsc();
       BlockLoads& loads = block_loads_[block];
       for (std::vector<BodyLoad>& range : loads) range.clear();
       const long last = std::min(rows, (block + 1) * kRowsPerBlock);
@@ -403,7 +411,7 @@ void World::composite_pair_forces(double memory_dt) {
           if (placed_.travel(i) + placed_.travel(j) < budget[e]) continue;
           __builtin_prefetch(budgets_.parts(e));
           prefetch_lines(pair_sub_[e].data(), pair_sub_[e].size() * sizeof(SubContact));
-          if (p.shape[j] != 0)  // capsule line and box lines of every part
+          if (p.shape[j] != 0)  // the two lines of every part
             prefetch_lines(placed_.parts(j), placed_.part_count(j) * sizeof(PlacedPart));
         }
       }
@@ -444,7 +452,9 @@ void World::composite_pair_forces(double memory_dt) {
         }
         if (fi != Vec3{} || ti != Vec3{}) loads[range_of(i)].push_back({i, fi, ti});
       }
+      block_schedule_.record(block, __rdtsc() - block_start);
     }
+#pragma omp barrier
 #pragma omp for schedule(static)
     for (int range = 0; range < kLoadRanges; ++range)
       for (long block = 0; block < blocks; ++block)

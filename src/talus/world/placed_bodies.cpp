@@ -8,16 +8,12 @@
 namespace talus {
 
 // Writes every field in place: the parts of all bodies are placed each step, and building a
-// temporary then copying it (216 bytes a part) cost a memset and a memmove per part. The pose
+// temporary then copying it (a 128-byte part) cost a memset and a memmove per part. The pose
 // is never assembled as a Pose either: the compiler spilled it to the stack and read it back
 // with wider loads than it had stored, and each such read waited for the store queue to drain.
 void place_part(const CompositePart& part, const Pose& body, PlacedPart& p) {
-  p.orientation = body.orientation * part.pose.orientation;
   p.box.centre = body.to_parent(part.pose.position);
-  rotation_axes(p.orientation, p.box.axis);
-  const Vec3 c = part.capsule.half_axis;
-  p.capsule_axis = p.box.axis[0] * c.x + p.box.axis[1] * c.y + p.box.axis[2] * c.z;
-  p.capsule_radius = part.capsule.radius;
+  rotation_axes(body.orientation * part.pose.orientation, p.box.axis);
   const Box* b = std::get_if<Box>(&part.shape.geometry);
   p.box.half = b ? b->half_extents : Vec3{};
   p.is_box = b != nullptr;

@@ -12,6 +12,7 @@
 #include "talus/collide/pair_list.h"
 #include "talus/contact/contact_law.h"
 #include "talus/contact/contact_table.h"
+#include "talus/world/block_schedule.h"
 #include "talus/world/domain.h"
 #include "talus/world/periodic_ghosts.h"
 #include "talus/shape/composite_shape.h"
@@ -167,6 +168,7 @@ class World {
   static constexpr int kLoadRanges = 8;
   using BlockLoads = std::array<std::vector<BodyLoad>, kLoadRanges>;
   std::vector<BlockLoads> block_loads_;
+  BlockSchedule block_schedule_;
   // Per list entry and per part pair: found apart, and so while the two bodies' travels
   // (PlacedBodies::travel) add up to less than the budget. Cleared at every rebuild.
   PairBudgets budgets_;
