@@ -275,6 +275,40 @@ TEST(ConvexContactManifold, CubeOnPlane) {
   EXPECT_NEAR(std::abs(e.points[0].point_a.x - e.points[1].point_a.x), 1, 1e-12);
 }
 
+// The wall path passes the placed box so corners clearly above the plane are skipped: the
+// manifold must not change by a bit. Boxes of a cross arm's proportions at random orientations,
+// their centres from well inside the plane to just out of reach.
+TEST(ConvexContactManifold, PlacedBoxSkipsOnlyCornersAbovePlane) {
+  const Vec3 half{0.0135, 0.001, 0.0015};
+  const ConvexShape arm = make_box(half);
+  const HalfSpace floor{{0, 0, 1}, 0.02};
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int touching = 0, skipped = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Quat q{u(rng), u(rng), u(rng), u(rng)};
+    q = q.normalized();
+    const Pose pose{{0.3 + u(rng), 0.1 * u(rng), floor.offset + 0.014 * u(rng)}, q};
+    const ContactManifold full = convex_plane_manifold(arm, pose, floor);
+    const OrientedBox placed = oriented_box(half, pose);
+    const ContactManifold culled = convex_plane_manifold(arm, pose, floor, &placed);
+    ASSERT_EQ(full.count, culled.count) << "trial " << trial;
+    for (int k = 0; k < full.count; ++k) {
+      EXPECT_EQ(full.points[k].feature_id, culled.points[k].feature_id);
+      EXPECT_EQ(full.points[k].delta_n, culled.points[k].delta_n);
+      EXPECT_EQ(full.points[k].point, culled.points[k].point);
+    }
+    touching += full.count > 0;
+    // How many corners the bound proves above the plane (it must prove some, or it does nothing).
+    for (int k = 0; k < 8; ++k) {
+      const Vec3 x = pose.to_parent({k & 1 ? half.x : -half.x, k & 2 ? half.y : -half.y, k & 4 ? half.z : -half.z});
+      skipped += floor.offset - dot(floor.normal, x) < -1e-6;
+    }
+  }
+  EXPECT_GT(touching, 2000);
+  EXPECT_GT(skipped, 20000);
+}
+
 TEST(ConvexContactManifold, BoxOnBoxFaceAndEdge) {
   const ConvexShape big = make_box({2, 2, 0.5}), small = make_box({0.5, 0.5, 0.5});
   // Face on face: 4 points at the small box's bottom corners, equal depth.

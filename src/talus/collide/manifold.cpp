@@ -141,13 +141,28 @@ ContactManifold box_box_manifold(const Vec3& ha, const Pose& pa, const Vec3& hb,
   return box_box_manifold(oriented_box(ha, pa), oriented_box(hb, pb), sat);
 }
 
-ContactManifold convex_plane_manifold(const ConvexShape& a, const Pose& pa, const HalfSpace& plane) {
+ContactManifold convex_plane_manifold(const ConvexShape& a, const Pose& pa, const HalfSpace& plane,
+                                      const OrientedBox* placed) {
   if (const Box* b = std::get_if<Box>(&a.geometry)) {
     // Eight corners on the stack: a wall contact of a box costs no heap.
     const Vec3 h = b->half_extents;
+    // With the box's world axes, a corner's depth is the centre's minus three projections: a
+    // corner above the plane by more than 1e-9 of the box size (rounding is 1e-16 of it) is
+    // never turned by the quaternion. A box lying on a wall has four such corners.
+    Vec3 reach;
+    double centre_depth = 0, margin = -1;
+    if (placed) {
+      reach = {h.x * dot(plane.normal, placed->axis[0]), h.y * dot(plane.normal, placed->axis[1]),
+               h.z * dot(plane.normal, placed->axis[2])};
+      centre_depth = plane.offset - dot(plane.normal, placed->centre);
+      margin = 1e-9 * (h.x + h.y + h.z);
+    }
     UninitializedArray<ManifoldPoint, 8> pts;
     std::size_t n = 0;
     for (int k = 0; k < 8; ++k) {
+      if (margin > 0 && centre_depth - ((k & 1 ? reach.x : -reach.x) + (k & 2 ? reach.y : -reach.y) +
+                                        (k & 4 ? reach.z : -reach.z)) < -margin)
+        continue;
       const Vec3 x = pa.to_parent({k & 1 ? h.x : -h.x, k & 2 ? h.y : -h.y, k & 4 ? h.z : -h.z});
       const double depth = plane.offset - dot(plane.normal, x);
       if (depth > 0) pts[n++] = make_point(x, x + plane.normal * depth, depth, static_cast<std::uint32_t>(k));

@@ -42,7 +42,10 @@ struct ContactManifold {
 ContactManifold box_box_manifold(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat);
 ContactManifold box_box_manifold(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                                  const BoxBoxSat& sat);
-ContactManifold convex_plane_manifold(const ConvexShape& a, const Pose& pose_a, const HalfSpace& plane);
+// `placed`, when given, is `a` as a placed box (the caller's axes of pose_a): corners clearly
+// above the plane are then skipped before they are placed; the points are the same to the bit.
+ContactManifold convex_plane_manifold(const ConvexShape& a, const Pose& pose_a, const HalfSpace& plane,
+                                      const OrientedBox* placed = nullptr);
 ContactManifold contact_manifold(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,
                                  ContactCache* warm = nullptr);
 

@@ -350,7 +350,9 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
     UninitializedArray<PointGeometry, 4> points;
     int n = 0;
     if (settings_.contact_manifold) {
-      n = touching_points(convex_plane_manifold(si.parts[a].shape, pa, plane), points.data());
+      n = touching_points(
+          convex_plane_manifold(si.parts[a].shape, pa, plane, placed[a].is_box ? &placed[a].box : nullptr),
+          points.data());
     } else {
       const PartContact c = convex_plane_contact(si.parts[a].shape, pa, plane);
       if (c.touching && c.delta_n > 0) points[n++] = {c.normal, c.point, c.delta_n, 0};
