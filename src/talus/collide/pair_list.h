@@ -84,6 +84,7 @@ class PairList {
   // only, never on the number of threads.
   const std::vector<std::uint32_t>& slab_chunks() const { return chunk_; }
   const std::uint32_t* neighbors() const { return neighbor_.data(); }
+  const std::uint32_t* row_offsets() const { return row_.data(); }
   std::size_t bytes() const;
 
   ContactMemory memory;

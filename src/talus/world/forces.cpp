@@ -5,7 +5,7 @@
 
 #include "talus/world/memory_ref.h"
 #include "talus/world/parallel.h"
-#include "talus/world/sphere_contact.h"
+#include "talus/world/sphere_pair_rows.h"
 #include "talus/world/world.h"
 
 namespace talus {
@@ -32,74 +32,24 @@ template <TangentialModel Model>
 void World::pair_forces(double memory_dt) {
   ScopedPhase phase(timer_, Phase::pair_forces);
   ParticleStore& p = particles_;
-  PairList& list = pairs_;
-  ContactMemory& mem = list.memory;
-  const bool has_spring = !mem.spring.empty();
-  const bool has_normal = !mem.normal_prev.empty();
-  const bool has_rolling = !mem.rolling.empty();
+  const PairList& list = pairs_;
+  ContactMemory& mem = pairs_.memory;
+  const auto data = [](auto& v) { return v.empty() ? nullptr : v.data(); };
+  const SpherePairArrays arrays{p.position.data(), p.velocity.data(), p.angular_velocity.data(), p.radius.data(),
+                                p.inv_mass.data(), p.species.data(), list.neighbors(), list.row_offsets(),
+                                p.force.data(), p.torque.data(), data(mem.spring), data(mem.normal_prev),
+                                data(mem.rolling)};
   const bool parallel = worth_parallel(p.owned);
-  // Raw pointers: the force writes cannot alias the arrays read, and the compiler may keep
-  // the bases in registers.
-  const Vec3* __restrict position = p.position.data();
-  const Vec3* __restrict velocity = p.velocity.data();
-  const Vec3* __restrict spin = p.angular_velocity.data();
-  const double* __restrict radius = p.radius.data();
-  const double* __restrict inv_mass = p.inv_mass.data();
-  const std::int32_t* __restrict species = p.species.data();
-  const std::uint32_t* __restrict neighbor = list.neighbors();
-  Vec3* __restrict force = p.force.data();
-  Vec3* __restrict torque = p.torque.data();
-  Vec3* __restrict spring = has_spring ? mem.spring.data() : nullptr;
-  Vec3* __restrict normal_prev = has_normal ? mem.normal_prev.data() : nullptr;
-  Vec3* __restrict rolling = has_rolling ? mem.rolling.data() : nullptr;
-  // An entry remembers a past contact iff this memory is non-zero: the previous normal when it
-  // is kept (set at every touching step, and the other memories change only then), else the
-  // spring, the only memory left. Null: nothing to forget.
-  const Vec3* __restrict marker = has_normal ? normal_prev : spring;
-
   const std::vector<std::uint32_t>& chunk = list.slab_chunks();
   const long chunks = static_cast<long>(chunk.size()) - 1;
+  const auto rows = with_memory_flags<Model>(mem);
   // Chunk c writes to its own slabs and the first slab of chunk c + 1 only: even chunks run
   // together, then odd ones. The chunks depend on the list alone, never on the thread count,
   // so every particle receives its contributions in the same order on any team.
   for (int colour = 0; colour < 2; ++colour) {
 #pragma omp parallel for schedule(static, 1) if (parallel && chunks > 2)
-    for (long c = colour; c < chunks; c += 2) {
-      for (std::uint32_t i = list.slab_begin(chunk[c]); i < list.slab_begin(chunk[c + 1]); ++i) {
-        const Vec3 xi = position[i];
-        const double ri = radius[i];
-        const double inv_mi = inv_mass[i];
-        const int species_i = species[i];
-        Vec3 fi, ti;
-        const std::uint32_t row_end = list.row_end(i);
-        for (std::uint32_t e = list.row_begin(i); e < row_end; ++e) {
-          const std::uint32_t j = neighbor[e];
-          const Vec3 d = xi - position[j];
-          const double rj = radius[j];
-          const double reach = ri + rj;
-          const double dist2 = norm2(d);
-          if (dist2 >= reach * reach) {  // apart: a later contact starts afresh
-            if (marker && marker[e] != Vec3{}) {
-              if (has_spring) spring[e] = {};
-              if (has_normal) normal_prev[e] = {};
-              if (has_rolling) rolling[e] = {};
-            }
-            continue;
-          }
-          const ContactMotion m{velocity[i], spin[i], velocity[j], spin[j]};
-          const ContactHistoryRef h{has_spring ? spring + e : nullptr, has_normal ? normal_prev + e : nullptr,
-                                    has_rolling ? rolling + e : nullptr};
-          const ContactResult r = sphere_contact<Model>(d, dist2, ri, rj, m, table_.pair(species_i, species[j]),
-                                                        1.0 / (inv_mi + inv_mass[j]), memory_dt, h);
-          fi += r.force_on_i;
-          ti += r.torque_i;
-          force[j] -= r.force_on_i;
-          torque[j] += r.torque_j;
-        }
-        force[i] += fi;
-        torque[i] += ti;
-      }
-    }
+    for (long c = colour; c < chunks; c += 2)
+      rows(arrays, table_, memory_dt, list.slab_begin(chunk[c]), list.slab_begin(chunk[c + 1]));
   }
 }
 

@@ -1,0 +1,46 @@
+#pragma once
+// A batch of touching sphere pairs, and the elastic-spring contact law (Weinhart et al. 2012)
+// evaluated on a whole batch at once, one contact per vector lane. The lanes are laid out as
+// separate arrays (one per component) so that the compiler's vector loop reads them directly;
+// the law itself is the one of contact_law.h, line for line.
+#include <cstdint>
+
+#include "talus/contact/contact_table.h"
+#include "talus/math/vec3.h"
+
+namespace talus {
+
+struct ContactBatch {
+  static constexpr std::uint32_t kSize = 64;  ///< contacts; the batch and its lanes fit in L1
+  std::uint32_t count = 0;
+  std::uint32_t entry[kSize], i[kSize], j[kSize];
+  alignas(64) double dx[kSize], dy[kSize], dz[kSize], dist2[kSize];
+  // Results of the vector law: force on i, torques on i and j.
+  alignas(64) double fx[kSize], fy[kSize], fz[kSize];
+  alignas(64) double tix[kSize], tiy[kSize], tiz[kSize];
+  alignas(64) double tjx[kSize], tjy[kSize], tjz[kSize];
+
+  void put(std::uint32_t k, std::uint32_t e, std::uint32_t pi, std::uint32_t pj, const Vec3& d, double d2) {
+    entry[k] = e;
+    i[k] = pi;
+    j[k] = pj;
+    dx[k] = d.x;
+    dy[k] = d.y;
+    dz[k] = d.z;
+    dist2[k] = d2;
+  }
+  Vec3 d(std::uint32_t k) const { return {dx[k], dy[k], dz[k]}; }
+  Vec3 force_on_i(std::uint32_t k) const { return {fx[k], fy[k], fz[k]}; }
+  Vec3 torque_i(std::uint32_t k) const { return {tix[k], tiy[k], tiz[k]}; }
+  Vec3 torque_j(std::uint32_t k) const { return {tjx[k], tjy[k], tjz[k]}; }
+};
+
+// The elastic-spring law without rolling resistance on every contact of `batch` (whose
+// dist2 < (r_i + r_j)^2): fills its results and advances each contact's spring
+// (Weinhart et al. 2012, Eqs. 3, 7, 9 and Alg. 2; contact_law.h has the scalar form).
+void sphere_elastic_batch(ContactBatch& batch, const Vec3* __restrict velocity, const Vec3* __restrict spin,
+                          const double* __restrict radius, const double* __restrict inv_mass,
+                          const std::int32_t* __restrict species, const ContactTable& table,
+                          Vec3* __restrict spring, double dt);
+
+}  // namespace talus

@@ -1,0 +1,110 @@
+#pragma once
+// The sphere pair loop over a range of neighbour-list rows, in two passes over batches of
+// entries: a distance test that gathers the touching entries, then the contact law on those
+// only. Touching and apart entries alternate at random (about 40 % touch in a dense flow);
+// split, the first pass is a short loop with one rare branch, and the second runs the same
+// path for every contact, which lets the elastic-spring law run four contacts per vector
+// instruction (sphere_elastic_batch.h).
+#include <cstdint>
+
+#include "talus/collide/pair_list.h"
+#include "talus/contact/contact_table.h"
+#include "talus/world/sphere_contact.h"
+#include "talus/world/sphere_elastic_batch.h"
+
+namespace talus {
+
+// The particle and memory arrays the loop reads and writes (memories null when off).
+struct SpherePairArrays {
+  const Vec3* __restrict position;
+  const Vec3* __restrict velocity;
+  const Vec3* __restrict spin;
+  const double* __restrict radius;
+  const double* __restrict inv_mass;
+  const std::int32_t* __restrict species;
+  const std::uint32_t* __restrict neighbor;
+  const std::uint32_t* __restrict row;  ///< CSR offsets: row i is [row[i], row[i + 1])
+  Vec3* __restrict force;
+  Vec3* __restrict torque;
+  Vec3* __restrict spring;
+  Vec3* __restrict normal_prev;
+  Vec3* __restrict rolling;
+};
+
+// Forces of the pairs listed in rows [first, last), added to both particles of each pair in
+// entry order (whatever the batches, so any split of the rows gives the same sums). The kept
+// memories are compile-time flags, so the loops carry no null tests.
+template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
+[[gnu::noinline]] void sphere_pair_rows(const SpherePairArrays& a, const ContactTable& table, double memory_dt,
+                                        std::uint32_t first, std::uint32_t last) {
+  // The vector path covers the law of the periodic chute (Weinhart et al. 2012): elastic
+  // spring, no rolling resistance. Every other law runs contact by contact.
+  constexpr bool kVector = Model == TangentialModel::elastic_spring && kSpring && !kNormal && !kRolling;
+  // An entry remembers a past contact iff this memory is non-zero (forces.cpp explains).
+  const Vec3* __restrict marker = kNormal ? a.normal_prev : (kSpring ? a.spring : nullptr);
+  ContactBatch batch;
+
+  const auto flush = [&] {
+    if constexpr (kVector) {
+      sphere_elastic_batch(batch, a.velocity, a.spin, a.radius, a.inv_mass, a.species, table, a.spring, memory_dt);
+      for (std::uint32_t k = 0; k < batch.count; ++k) {
+        const std::uint32_t i = batch.i[k], j = batch.j[k];
+        a.force[i] += batch.force_on_i(k);
+        a.torque[i] += batch.torque_i(k);
+        a.force[j] -= batch.force_on_i(k);
+        a.torque[j] += batch.torque_j(k);
+      }
+    } else {
+      for (std::uint32_t k = 0; k < batch.count; ++k) {
+        const std::uint32_t e = batch.entry[k], i = batch.i[k], j = batch.j[k];
+        const ContactMotion m{a.velocity[i], a.spin[i], a.velocity[j], a.spin[j]};
+        const ContactHistoryRef h{kSpring ? a.spring + e : nullptr, kNormal ? a.normal_prev + e : nullptr,
+                                  kRolling ? a.rolling + e : nullptr};
+        const ContactResult r = sphere_contact<Model>(batch.d(k), batch.dist2[k], a.radius[i], a.radius[j], m,
+                                                      table.pair(a.species[i], a.species[j]),
+                                                      1.0 / (a.inv_mass[i] + a.inv_mass[j]), memory_dt, h);
+        a.force[i] += r.force_on_i;
+        a.torque[i] += r.torque_i;
+        a.force[j] -= r.force_on_i;
+        a.torque[j] += r.torque_j;
+      }
+    }
+    batch.count = 0;
+  };
+
+  for (std::uint32_t i = first; i < last; ++i) {
+    const Vec3 xi = a.position[i];
+    const double ri = a.radius[i];
+    for (std::uint32_t e = a.row[i]; e < a.row[i + 1]; ++e) {
+      const std::uint32_t j = a.neighbor[e];
+      const Vec3 d = xi - a.position[j];
+      const double reach = ri + a.radius[j];
+      const double dist2 = norm2(d);
+      const bool touches = dist2 < reach * reach;
+      batch.put(batch.count, e, static_cast<std::uint32_t>(i), j, d, dist2);  // kept only if it touches
+      batch.count += touches;
+      if constexpr (kSpring || kNormal) {
+        // Apart: a later contact starts afresh. Rare (the contact just ended), so predicted.
+        if (!touches && marker[e] != Vec3{}) {
+          if constexpr (kSpring) a.spring[e] = {};
+          if constexpr (kNormal) a.normal_prev[e] = {};
+          if constexpr (kRolling) a.rolling[e] = {};
+        }
+      }
+      if (batch.count == ContactBatch::kSize) flush();
+    }
+  }
+  if (batch.count) flush();
+}
+
+// The instance of sphere_pair_rows for the memories `memory` keeps.
+template <TangentialModel Model>
+auto with_memory_flags(const ContactMemory& memory) {
+  using Rows = void (*)(const SpherePairArrays&, const ContactTable&, double, std::uint32_t, std::uint32_t);
+  const bool spring = !memory.spring.empty(), normal = !memory.normal_prev.empty(), rolling = !memory.rolling.empty();
+  if (rolling) return normal ? Rows{sphere_pair_rows<Model, true, true, true>} : Rows{sphere_pair_rows<Model, false, false, true>};
+  if (normal) return spring ? Rows{sphere_pair_rows<Model, true, true, false>} : Rows{sphere_pair_rows<Model, false, true, false>};
+  return spring ? Rows{sphere_pair_rows<Model, true, false, false>} : Rows{sphere_pair_rows<Model, false, false, false>};
+}
+
+}  // namespace talus
