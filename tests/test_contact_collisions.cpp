@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 #include "talus/contact/parameter_procedure.h"
@@ -121,6 +122,76 @@ TEST(ContactCollision, ClampedNormalForceMatchesClosedForm) {
   EXPECT_NEAR(c.restitution / e_clamped, 1.0, 0.005);
   // After the force vanishes the spheres still overlap briefly and fly apart force-free.
   EXPECT_GT(c.duration, t_end);
+}
+
+// Two spheres graze each other, once straight through and once with a state capture and
+// restore in the middle of the contact. When they separate the stored tangential spring and
+// normal must be zero (a later contact starts afresh), and the restored run must transfer the
+// same impulse as the straight one.
+TEST(ContactCollision, EndedContactsForgetTheirMemory) {
+  for (const TangentialModel model :
+       {TangentialModel::elastic_spring, TangentialModel::memory, TangentialModel::memoryless}) {
+    WorldSettings s;
+    s.domain = {{-10, -10, -10}, {10, 10, 10}};
+    s.gravity = {};
+    s.time_step = 1e-4;
+    s.tangential_model = model;
+    s.skin = 2e-4;  // lists rebuilt every few steps, memories carried over each time
+    const auto make = [&] {
+      auto w = std::make_unique<World>(s);
+      w->contacts().resize(1, 1);
+      w->contacts().set_pair(0, 0, chute_params());
+      ParticleInit a;
+      a.radius = 0.5;
+      a.mass = 1;
+      a.inertia = {0.1, 0.1, 0.1};
+      a.position = {-0.6, 0.1, 0};
+      a.velocity = {0.5, 0.2, 0};
+      w->add_particle(a);
+      a.position = {0.6, -0.1, 0};
+      a.velocity = {-0.5, -0.2, 0};
+      w->add_particle(a);
+      return w;
+    };
+    auto w = make();
+    const auto memory_is_blank = [&](const World& world) {
+      const WorldState st = const_cast<World&>(world).capture_state();
+      for (const auto* v : {&st.pair_memory.spring, &st.pair_memory.normal_prev, &st.pair_memory.rolling})
+        for (const Vec3& m : *v)
+          if (m != Vec3{}) return false;
+      return true;
+    };
+    const auto graze = [&](std::unique_ptr<World>& world, bool restore_midway) {
+      const Vec3 v0 = world->particles().velocity[world->particles().gid[0] == 0 ? 0 : 1];
+      bool touched = false;
+      int steps = 0;
+      for (int k = 0; k < 100000; ++k) {
+        world->step();
+        const bool touching = world->diagnostics().contacts > 0;
+        if (touching && !touched && restore_midway) {
+          // Mid-contact: carry the state into a fresh world, which rebuilds its lists.
+          for (int m = 0; m < 5; ++m) world->step();
+          const WorldState middle = world->capture_state();
+          auto fresh = make();
+          fresh->restore_state(middle);
+          world = std::move(fresh);
+        }
+        touched = touched || touching;
+        if (touching) ++steps;
+        if (touched && !world->diagnostics().contacts) break;
+      }
+      EXPECT_GT(steps, 10);
+      const Vec3 v1 = world->particles().velocity[world->particles().gid[0] == 0 ? 0 : 1];
+      return v1 - v0;
+    };
+    const Vec3 restored = graze(w, true);
+    EXPECT_TRUE(memory_is_blank(*w)) << "after the graze carried through a restore";
+    auto plain = make();
+    const Vec3 straight = graze(plain, false);
+    EXPECT_TRUE(memory_is_blank(*plain)) << "after the graze";
+    EXPECT_GT(norm(straight), 0.1);
+    EXPECT_EQ(restored, straight);  // restores continue bit for bit
+  }
 }
 
 TEST(ContactParameters, HuetProcedureRoundTrips) {

@@ -101,13 +101,20 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
     std::vector<std::uint32_t>().swap(block_neighbors[t]);
   }
   memory.resize(neighbor_.size(), layout);
+  remembered_.assign(neighbor_.size(), 0);
   entries_per_row_ = owned ? static_cast<double>(neighbor_.size()) / static_cast<double>(owned) : 0.0;
   split_slabs();
 }
 
 void PairList::release() {
   std::vector<std::uint32_t>().swap(neighbor_);
+  std::vector<std::uint8_t>().swap(remembered_);
   memory = ContactMemory{};
+}
+
+void PairList::remark_memories() {
+  remembered_.resize(neighbor_.size());
+  for (std::size_t e = 0; e < remembered_.size(); ++e) remembered_[e] = memory.active(e);
 }
 
 void PairList::split_slabs() {
@@ -189,6 +196,7 @@ void PairList::restore_memory(const CarriedContacts& carried, const std::vector<
       }
       if (k < 0) continue;
       memory.copy_from(carried.memory, k, e, reversed);
+      remembered_[e] = memory.active(e);
       if (origin) (*origin)[e] = reversed ? -(carried.entry[k] + std::int64_t{1}) : carried.entry[k] + std::int64_t{1};
     }
   }
@@ -201,7 +209,7 @@ void PairList::transfer_memory(const PairList& old, const std::vector<std::uint3
 }
 
 std::size_t PairList::bytes() const {
-  return row_.capacity() * 4 + neighbor_.capacity() * 4 + slab_start_.capacity() * 4 +
+  return row_.capacity() * 4 + neighbor_.capacity() * 4 + remembered_.capacity() + slab_start_.capacity() * 4 +
          (memory.spring.capacity() + memory.normal_prev.capacity() + memory.rolling.capacity()) * sizeof(Vec3);
 }
 

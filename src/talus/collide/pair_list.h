@@ -85,6 +85,11 @@ class PairList {
   const std::vector<std::uint32_t>& slab_chunks() const { return chunk_; }
   const std::uint32_t* neighbors() const { return neighbor_.data(); }
   const std::uint32_t* row_offsets() const { return row_.data(); }
+  // Per entry, 1 if its memory may be non-zero: the sphere pair loop reads this byte, not the
+  // memories, to find the contacts that just ended (most entries are apart and stay so).
+  // Derived from `memory`: call remark_memories() after writing `memory` from outside.
+  std::uint8_t* remembered() { return remembered_.data(); }
+  void remark_memories();
   std::size_t bytes() const;
 
   ContactMemory memory;
@@ -94,6 +99,7 @@ class PairList {
 
   std::vector<std::uint32_t> row_;
   std::vector<std::uint32_t> neighbor_;
+  std::vector<std::uint8_t> remembered_;
   std::vector<std::uint32_t> slab_start_;  ///< first owned particle of each slab
   std::vector<std::uint32_t> chunk_;       ///< first slab of each chunk, then the slab count
   double entries_per_row_ = 0;             ///< of the last build

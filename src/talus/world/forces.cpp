@@ -38,7 +38,7 @@ void World::pair_forces(double memory_dt) {
   const SpherePairArrays arrays{p.position.data(), p.velocity.data(), p.angular_velocity.data(), p.radius.data(),
                                 p.inv_mass.data(), p.species.data(), list.neighbors(), list.row_offsets(),
                                 p.force.data(), p.torque.data(), data(mem.spring), data(mem.normal_prev),
-                                data(mem.rolling)};
+                                data(mem.rolling), pairs_.remembered()};
   const bool parallel = worth_parallel(p.owned);
   const std::vector<std::uint32_t>& chunk = list.slab_chunks();
   const long chunks = static_cast<long>(chunk.size()) - 1;

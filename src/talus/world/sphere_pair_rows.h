@@ -29,6 +29,7 @@ struct SpherePairArrays {
   Vec3* __restrict spring;
   Vec3* __restrict normal_prev;
   Vec3* __restrict rolling;
+  std::uint8_t* __restrict remembered;  ///< per entry: its memories may be non-zero (PairList::remembered)
 };
 
 // Forces of the pairs listed in rows [first, last), added to both particles of each pair in
@@ -40,8 +41,6 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
   // The vector path covers the law of the periodic chute (Weinhart et al. 2012): elastic
   // spring, no rolling resistance. Every other law runs contact by contact.
   constexpr bool kVector = Model == TangentialModel::elastic_spring && kSpring && !kNormal && !kRolling;
-  // An entry remembers a past contact iff this memory is non-zero (forces.cpp explains).
-  const Vec3* __restrict marker = kNormal ? a.normal_prev : (kSpring ? a.spring : nullptr);
   ContactBatch batch;
 
   const auto flush = [&] {
@@ -85,7 +84,9 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
       batch.count += touches;
       if constexpr (kSpring || kNormal) {
         // Apart: a later contact starts afresh. Rare (the contact just ended), so predicted.
-        if (!touches && marker[e] != Vec3{}) {
+        const bool ended = a.remembered[e] && !touches;
+        a.remembered[e] = touches;
+        if (ended) [[unlikely]] {
           if constexpr (kSpring) a.spring[e] = {};
           if constexpr (kNormal) a.normal_prev[e] = {};
           if constexpr (kRolling) a.rolling[e] = {};

@@ -126,6 +126,7 @@ void World::restore_state(const WorldState& s) {
               "the rebuilt neighbour list differs from the stored one at entry " + std::to_string(e));
   check_memory_size(s.pair_memory, pairs_.memory, "particle");
   pairs_.memory = s.pair_memory;
+  pairs_.remark_memories();
   require(s.pair_sub.size() == pair_sub_.size(), "contact points of rigid bodies do not match the neighbour list");
   pair_sub_ = s.pair_sub;
 
