@@ -42,7 +42,7 @@ TEST(SphereElasticBatch, MatchesTheScalarLawContactByContact) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   const auto rand_vec = [&](double s) { return Vec3{u(rng), u(rng), u(rng)} * s; };
-  constexpr int kBodies = 300;
+  constexpr int kBodies = 2 * ContactBatch::kSize;  // contact k: bodies 2k and 2k + 1
   std::vector<Vec3> position(kBodies), velocity(kBodies), spin(kBodies);
   std::vector<double> radius(kBodies), inv_mass(kBodies);
   std::vector<std::int32_t> species(kBodies);
@@ -56,24 +56,22 @@ TEST(SphereElasticBatch, MatchesTheScalarLawContactByContact) {
   const double dt = 1e-4;
   // Several batch sizes, full and partial (padding lanes).
   int slid = 0, stuck = 0;
-  for (const int count : {1, 3, 8, 13, 64}) {
+  for (const std::uint32_t count : {1u, 3u, 8u, 13u, ContactBatch::kSize}) {
     ContactBatch batch;
     std::vector<Vec3> spring_batch, spring_scalar;
     std::vector<ContactResult> expected;
-    for (int k = 0; k < count; ++k) {
-      const std::uint32_t i = static_cast<std::uint32_t>((k * 7) % kBodies);
-      const std::uint32_t j = static_cast<std::uint32_t>((k * 13 + 5) % kBodies);
-      if (i == j || (inv_mass[i] == 0 && inv_mass[j] == 0)) {
-        --k;
-        continue;  // skipped slots are never filled; count stays the batch size
-      }
+    for (std::uint32_t k = 0; k < count; ++k) {
+      const std::uint32_t i = 2 * k + (k % 2), j = 2 * k + 1 - (k % 2);
       // j placed touching i at a random overlap up to 2 % of the reach.
       const double reach = radius[i] + radius[j];
       const Vec3 dir = normalized_or_zero(rand_vec(1.0));
-      const Vec3 d = dir * (reach * (1 - 0.02 * (0.5 + 0.5 * u(rng))));
+      position[i] = rand_vec(10.0);
+      position[j] = position[i] - dir * (reach * (1 - 0.02 * (0.5 + 0.5 * u(rng))));
+      const Vec3 d = position[i] - position[j];
       const Vec3 s0 = rand_vec(k % 2 ? 0.1 : 1e-6);  // large springs slide, small ones stick
-      batch.put(static_cast<std::uint32_t>(spring_batch.size()), static_cast<std::uint32_t>(spring_batch.size()), i,
-                j, d, norm2(d));
+      batch.entry[k] = k;
+      batch.i[k] = i;
+      batch.j[k] = j;
       spring_batch.push_back(s0);
       spring_scalar.push_back(s0);
       const ContactMotion m{velocity[i], spin[i], velocity[j], spin[j]};
@@ -83,7 +81,7 @@ TEST(SphereElasticBatch, MatchesTheScalarLawContactByContact) {
           dt, h));
     }
     batch.count = static_cast<std::uint32_t>(expected.size());
-    sphere_elastic_batch(batch, velocity.data(), spin.data(), radius.data(), inv_mass.data(), species.data(), table,
+    sphere_elastic_batch(batch, position.data(), velocity.data(), spin.data(), radius.data(), inv_mass.data(), species.data(), table,
                          spring_batch.data(), dt);
     for (std::uint32_t k = 0; k < batch.count; ++k) {
       // Scales: the force and torque magnitudes of this contact. The two forms differ only by
@@ -95,9 +93,10 @@ TEST(SphereElasticBatch, MatchesTheScalarLawContactByContact) {
       EXPECT_LT(rel_diff(batch.torque_j(k), expected[k].torque_j, f * r), 1e-12) << "contact " << k;
       const double s = std::max(norm(spring_scalar[k]), 1e-300);
       EXPECT_LT(rel_diff(spring_batch[k], spring_scalar[k], s), 1e-12) << "contact " << k;
-      const double fn = std::abs(dot(expected[k].force_on_i, normalized_or_zero(batch.d(k))));
-      const double ft = norm(expected[k].force_on_i - dot(expected[k].force_on_i, normalized_or_zero(batch.d(k))) *
-                                                          normalized_or_zero(batch.d(k)));
+      const Vec3 normal = normalized_or_zero(position[batch.i[k]] - position[batch.j[k]]);
+      const double fn = std::abs(dot(expected[k].force_on_i, normal));
+      const double ft = norm(expected[k].force_on_i - dot(expected[k].force_on_i, normal) *
+                                                          normal);
       const double mu = table.pair(species[batch.i[k]], species[batch.j[k]]).friction;
       (ft > (1 - 1e-9) * mu * fn ? slid : stuck) += 1;
     }

@@ -5,7 +5,8 @@
 
 namespace talus {
 
-void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict velocity, const Vec3* __restrict spin,
+void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, const Vec3* __restrict velocity,
+                          const Vec3* __restrict spin,
                           const double* __restrict radius, const double* __restrict inv_mass,
                           const std::int32_t* __restrict species, const ContactTable& table,
                           Vec3* __restrict spring, double dt) {
@@ -14,17 +15,16 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict velocity, cons
   // Whole vectors only: the padding lanes repeat the last contact and are never written back,
   // so every contact goes through the same instructions wherever it sits in a batch.
   const std::uint32_t lanes = std::min(N, (n + 7) & ~7u);
-  alignas(64) double ri[N], rj[N], vx[N], vy[N], vz[N], wix[N], wiy[N], wiz[N], wjx[N], wjy[N], wjz[N];
+  alignas(64) double dx[N], dy[N], dz[N], dist2[N], ri[N], rj[N], vx[N], vy[N], vz[N], wix[N], wiy[N], wiz[N], wjx[N], wjy[N], wjz[N];
   alignas(64) double sx[N], sy[N], sz[N], kn[N], eta_n[N], kt[N], eta_t[N], mu[N];
   for (std::uint32_t k = 0; k < lanes; ++k) {
     const std::uint32_t c = std::min(k, n - 1);
     const std::uint32_t i = b.i[c], j = b.j[c];
-    if (c != k) {
-      b.dx[k] = b.dx[c];
-      b.dy[k] = b.dy[c];
-      b.dz[k] = b.dz[c];
-      b.dist2[k] = b.dist2[c];
-    }
+    const Vec3 d = position[i] - position[j];  // as the distance test had it, to the bit
+    dx[k] = d.x;
+    dy[k] = d.y;
+    dz[k] = d.z;
+    dist2[k] = norm2(d);
     ri[k] = radius[i];
     rj[k] = radius[j];
     const Vec3 vij = velocity[i] - velocity[j];
@@ -53,9 +53,9 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict velocity, cons
 #pragma omp simd
   for (std::uint32_t k = 0; k < lanes; ++k) {
     // Geometry: Weinhart et al. 2012, branch vectors after Eq. (8).
-    const double dist = std::sqrt(b.dist2[k]);
+    const double dist = std::sqrt(dist2[k]);
     const double inv_dist = 1.0 / dist;
-    const Vec3 n{b.dx[k] * inv_dist, b.dy[k] * inv_dist, b.dz[k] * inv_dist};
+    const Vec3 n{dx[k] * inv_dist, dy[k] * inv_dist, dz[k] * inv_dist};
     const double overlap = (ri[k] + rj[k]) - dist;
     const Vec3 arm_i = n * -(ri[k] - 0.5 * overlap);
     const Vec3 arm_j = n * (rj[k] - 0.5 * overlap);

@@ -14,32 +14,22 @@ struct ContactBatch {
   static constexpr std::uint32_t kSize = 64;  ///< contacts; the batch and its lanes fit in L1
   std::uint32_t count = 0;
   std::uint32_t entry[kSize], i[kSize], j[kSize];
-  alignas(64) double dx[kSize], dy[kSize], dz[kSize], dist2[kSize];
   // Results of the vector law: force on i, torques on i and j.
   alignas(64) double fx[kSize], fy[kSize], fz[kSize];
   alignas(64) double tix[kSize], tiy[kSize], tiz[kSize];
   alignas(64) double tjx[kSize], tjy[kSize], tjz[kSize];
 
-  void put(std::uint32_t k, std::uint32_t e, std::uint32_t pi, std::uint32_t pj, const Vec3& d, double d2) {
-    entry[k] = e;
-    i[k] = pi;
-    j[k] = pj;
-    dx[k] = d.x;
-    dy[k] = d.y;
-    dz[k] = d.z;
-    dist2[k] = d2;
-  }
-  Vec3 d(std::uint32_t k) const { return {dx[k], dy[k], dz[k]}; }
   Vec3 force_on_i(std::uint32_t k) const { return {fx[k], fy[k], fz[k]}; }
   Vec3 torque_i(std::uint32_t k) const { return {tix[k], tiy[k], tiz[k]}; }
   Vec3 torque_j(std::uint32_t k) const { return {tjx[k], tjy[k], tjz[k]}; }
 };
 
-// The elastic-spring law without rolling resistance on every contact of `batch` (whose
-// dist2 < (r_i + r_j)^2): fills its results and advances each contact's spring
+// The elastic-spring law without rolling resistance on every contact of `batch` (pairs whose
+// centres are closer than r_i + r_j): fills its results and advances each contact's spring
 // (Weinhart et al. 2012, Eqs. 3, 7, 9 and Alg. 2; contact_law.h has the scalar form).
-void sphere_elastic_batch(ContactBatch& batch, const Vec3* __restrict velocity, const Vec3* __restrict spin,
-                          const double* __restrict radius, const double* __restrict inv_mass,
+void sphere_elastic_batch(ContactBatch& batch, const Vec3* __restrict position, const Vec3* __restrict velocity,
+                          const Vec3* __restrict spin, const double* __restrict radius,
+                          const double* __restrict inv_mass,
                           const std::int32_t* __restrict species, const ContactTable& table,
                           Vec3* __restrict spring, double dt);
 

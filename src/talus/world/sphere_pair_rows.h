@@ -43,9 +43,11 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
   constexpr bool kVector = Model == TangentialModel::elastic_spring && kSpring && !kNormal && !kRolling;
   ContactBatch batch;
 
-  const auto flush = [&] {
+  std::uint32_t count = 0;  // a local, not batch.count: the stores into the batch cannot alias it
+  const auto flush = [&](std::uint32_t& n) {
+    batch.count = n;
     if constexpr (kVector) {
-      sphere_elastic_batch(batch, a.velocity, a.spin, a.radius, a.inv_mass, a.species, table, a.spring, memory_dt);
+      sphere_elastic_batch(batch, a.position, a.velocity, a.spin, a.radius, a.inv_mass, a.species, table, a.spring, memory_dt);
       for (std::uint32_t k = 0; k < batch.count; ++k) {
         const std::uint32_t i = batch.i[k], j = batch.j[k];
         a.force[i] += batch.force_on_i(k);
@@ -59,7 +61,8 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
         const ContactMotion m{a.velocity[i], a.spin[i], a.velocity[j], a.spin[j]};
         const ContactHistoryRef h{kSpring ? a.spring + e : nullptr, kNormal ? a.normal_prev + e : nullptr,
                                   kRolling ? a.rolling + e : nullptr};
-        const ContactResult r = sphere_contact<Model>(batch.d(k), batch.dist2[k], a.radius[i], a.radius[j], m,
+        const Vec3 d = a.position[i] - a.position[j];
+        const ContactResult r = sphere_contact<Model>(d, norm2(d), a.radius[i], a.radius[j], m,
                                                       table.pair(a.species[i], a.species[j]),
                                                       1.0 / (a.inv_mass[i] + a.inv_mass[j]), memory_dt, h);
         a.force[i] += r.force_on_i;
@@ -68,7 +71,7 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
         a.torque[j] += r.torque_j;
       }
     }
-    batch.count = 0;
+    n = 0;
   };
 
   for (std::uint32_t i = first; i < last; ++i) {
@@ -80,8 +83,10 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
       const double reach = ri + a.radius[j];
       const double dist2 = norm2(d);
       const bool touches = dist2 < reach * reach;
-      batch.put(batch.count, e, static_cast<std::uint32_t>(i), j, d, dist2);  // kept only if it touches
-      batch.count += touches;
+      batch.entry[count] = e;  // kept only if it touches
+      batch.i[count] = i;
+      batch.j[count] = j;
+      count += touches;
       if constexpr (kSpring || kNormal) {
         // Apart: a later contact starts afresh. Rare (the contact just ended), so predicted.
         const bool ended = a.remembered[e] && !touches;
@@ -92,10 +97,10 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
           if constexpr (kRolling) a.rolling[e] = {};
         }
       }
-      if (batch.count == ContactBatch::kSize) flush();
+      if (count == ContactBatch::kSize) flush(count);
     }
   }
-  if (batch.count) flush();
+  if (count) flush(count);
 }
 
 // The instance of sphere_pair_rows for the memories `memory` keeps.
