@@ -21,7 +21,7 @@
 //  - neighbors_per_particle = half-list entries (each pair once, skin included) / particles.
 //  - rebuild_interval = timed steps / neighbour-list rebuilds.
 //  - share_*: fraction of the 1-thread wall time in each World::timer() phase; "other" is the
-//    rest (ghost refresh, force folding, loop overhead).
+//    rest (ghost refresh, force folding, loop overhead); 2t_share_* the same on two threads.
 //  - chute32k_bytes_per_particle: peak resident memory (VmHWM) minus resident memory before
 //    the world is built, per particle, measured in a fresh process (this executable re-run
 //    with --memory-probe) that only loads the 32k world from the cache and runs it on 2
@@ -247,6 +247,13 @@ void run_case(const ChuteCase& c, const Options& o) {
     accounted += one.phase_seconds[k];
   }
   metric(x + "_share_other", 100 * (one.seconds - accounted) / one.seconds, "%");
+  // Where the second thread does not help: the same shares on two threads.
+  accounted = 0;
+  for (int k = 0; k < 4; ++k) {
+    metric(x + "_2t_share_" + phase[k], 100 * two.phase_seconds[k] / two.seconds, "%");
+    accounted += two.phase_seconds[k];
+  }
+  metric(x + "_2t_share_other", 100 * (two.seconds - accounted) / two.seconds, "%");
   metric(x + "_mean_speed", one.mean_speed, "sqrt(gd)");
   const bool identical = one.position_by_gid.size() == two.position_by_gid.size() &&
                          std::memcmp(one.position_by_gid.data(), two.position_by_gid.data(),

@@ -51,12 +51,6 @@ CellCoord CellGrid::coord_of(const Vec3& x) const {
   return c;
 }
 
-std::int64_t CellGrid::linear(const CellCoord& c) const {
-  const int s = slab_axis_, p = (s + 1) % 3, q = (s + 2) % 3;
-  const std::int64_t np = last_[p] - first_[p] + 1, nq = last_[q] - first_[q] + 1;
-  return ((static_cast<std::int64_t>(c[s] - first_[s]) * np) + (c[p] - first_[p])) * nq + (c[q] - first_[q]);
-}
-
 std::int64_t CellGrid::linear_size() const {
   std::int64_t n = 1;
   for (int a = 0; a < 3; ++a) n *= last_[a] - first_[a] + 1;

@@ -22,7 +22,11 @@ class CellGrid {
   int cells(int axis) const { return count_[axis]; }
   int slab_axis() const { return slab_axis_; }  ///< the axis with the most cells
   // Linear index of a cell with the slab axis slowest, over the extended range [first, last].
-  std::int64_t linear(const CellCoord& c) const;
+  std::int64_t linear(const CellCoord& c) const {
+    const int s = slab_axis_, p = (s + 1) % 3, q = (s + 2) % 3;
+    const std::int64_t np = last_[p] - first_[p] + 1, nq = last_[q] - first_[q] + 1;
+    return ((static_cast<std::int64_t>(c[s] - first_[s]) * np) + (c[p] - first_[p])) * nq + (c[q] - first_[q]);
+  }
   std::int64_t linear_size() const;
   int first(int axis) const { return first_[axis]; }
   int last(int axis) const { return last_[axis]; }
@@ -32,6 +36,10 @@ class CellGrid {
   // Particles of one cell, in index order.
   const std::uint32_t* begin(std::int64_t cell) const { return items_.data() + start_[cell]; }
   const std::uint32_t* end(std::int64_t cell) const { return items_.data() + start_[cell + 1]; }
+  // Cells along the fastest axis are consecutive, so a run of them is one range of items:
+  // the particles of cells [first_cell, last_cell] in linear order.
+  const std::uint32_t* run_begin(std::int64_t first_cell) const { return begin(first_cell); }
+  const std::uint32_t* run_end(std::int64_t last_cell) const { return end(last_cell); }
 
  private:
   Vec3 origin_;

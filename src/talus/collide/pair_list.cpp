@@ -37,7 +37,7 @@ void ContactMemory::copy_from(const ContactMemory& src, std::size_t from, std::s
 void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_of, const CellGrid& grid,
                      double skin, const MemoryLayout& layout) {
   const std::size_t owned = p.owned;
-  const int s_axis = grid.slab_axis();
+  const int s_axis = grid.slab_axis(), p_axis = (s_axis + 1) % 3, q_axis = (s_axis + 2) % 3;  // as CellGrid::linear
   // Room for about as many entries per row as the last build had, so that blocks seldom grow
   // by doubling (a transient the peak memory would see). The old entries go first: whatever
   // must survive has been carried out of the list.
@@ -69,22 +69,28 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
       const bool fixed_i = p.inv_mass[i] == 0.0;
       const std::uint32_t gi = p.gid[i];
       const int si = ci[s_axis];
-      CellCoord c;
-      for (c[0] = std::max(ci[0] - 1, grid.first(0)); c[0] <= std::min(ci[0] + 1, grid.last(0)); ++c[0])
-        for (c[1] = std::max(ci[1] - 1, grid.first(1)); c[1] <= std::min(ci[1] + 1, grid.last(1)); ++c[1])
-          for (c[2] = std::max(ci[2] - 1, grid.first(2)); c[2] <= std::min(ci[2] + 1, grid.last(2)); ++c[2]) {
-            const int sc = c[s_axis];
-            if (sc < si) continue;
-            const std::int64_t cell = grid.linear(c);
-            for (const std::uint32_t* it = grid.begin(cell); it != grid.end(cell); ++it) {
-              const std::uint32_t j = *it;
-              if (j == i) continue;
-              if (sc == si && !(gi < p.gid[j])) continue;  // same slab: the lower global id lists the pair
-              if (fixed_i && p.inv_mass[j] == 0.0) continue;
-              const double range = ri + p.radius[j];
-              if (norm2(p.position[j] - xi) < range * range) out.push_back(j);
-            }
+      // The slab and the next one (pairs point up the slab axis), and in each the 3 x 3 cells
+      // around i; the three cells along the fastest axis q are one run of items.
+      CellCoord c = ci;
+      const int q_lo = std::max(ci[q_axis] - 1, grid.first(q_axis)), q_hi = std::min(ci[q_axis] + 1, grid.last(q_axis));
+      for (c[s_axis] = si; c[s_axis] <= std::min(si + 1, grid.last(s_axis)); ++c[s_axis]) {
+        const bool same_slab = c[s_axis] == si;
+        for (c[p_axis] = std::max(ci[p_axis] - 1, grid.first(p_axis));
+             c[p_axis] <= std::min(ci[p_axis] + 1, grid.last(p_axis)); ++c[p_axis]) {
+          c[q_axis] = q_lo;
+          const std::uint32_t* it = grid.run_begin(grid.linear(c));
+          c[q_axis] = q_hi;
+          const std::uint32_t* const run_end = grid.run_end(grid.linear(c));
+          for (; it != run_end; ++it) {
+            const std::uint32_t j = *it;
+            if (j == i) continue;
+            if (same_slab && !(gi < p.gid[j])) continue;  // same slab: the lower global id lists the pair
+            if (fixed_i && p.inv_mass[j] == 0.0) continue;
+            const double range = ri + p.radius[j];
+            if (norm2(p.position[j] - xi) < range * range) out.push_back(j);
           }
+        }
+      }
       row_[i + 1] = static_cast<std::uint32_t>(out.size());
     }
   }
