@@ -74,13 +74,21 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
     n = 0;
   };
 
+  // Locals, not members of `a`: the byte stores below may alias any memory, so the compiler
+  // would reload every base pointer from `a` at every entry.
+  const Vec3* __restrict position = a.position;
+  const double* __restrict radius = a.radius;
+  const std::uint32_t* __restrict row = a.row;
+  const std::uint32_t* __restrict neighbor = a.neighbor;
+  std::uint8_t* __restrict remembered = a.remembered;
   for (std::uint32_t i = first; i < last; ++i) {
-    const Vec3 xi = a.position[i];
-    const double ri = a.radius[i];
-    for (std::uint32_t e = a.row[i]; e < a.row[i + 1]; ++e) {
-      const std::uint32_t j = a.neighbor[e];
-      const Vec3 d = xi - a.position[j];
-      const double reach = ri + a.radius[j];
+    const Vec3 xi = position[i];
+    const double ri = radius[i];
+    const std::uint32_t row_end = row[i + 1];
+    for (std::uint32_t e = row[i]; e < row_end; ++e) {
+      const std::uint32_t j = neighbor[e];
+      const Vec3 d = xi - position[j];
+      const double reach = ri + radius[j];
       const double dist2 = norm2(d);
       const bool touches = dist2 < reach * reach;
       batch.entry[count] = e;  // kept only if it touches
@@ -89,8 +97,8 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
       count += touches;
       if constexpr (kSpring || kNormal) {
         // Apart: a later contact starts afresh. Rare (the contact just ended), so predicted.
-        const bool ended = a.remembered[e] && !touches;
-        a.remembered[e] = touches;
+        const bool ended = remembered[e] && !touches;
+        remembered[e] = touches;
         if (ended) [[unlikely]] {
           if constexpr (kSpring) a.spring[e] = {};
           if constexpr (kNormal) a.normal_prev[e] = {};
