@@ -151,7 +151,10 @@ std::vector<std::int32_t> rows_by_global_id(std::size_t rows, const std::vector<
 CarriedContacts PairList::carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
                                 bool every_entry) const {
   CarriedContacts c;
-  const auto keep = [&](std::uint32_t e) { return every_entry || memory.active(e); };
+  // The byte flags kept by the sphere pair loop say the same as the memories (a zero flag
+  // means a zero memory) in a twenty-fourth of the bytes. (Shaped bodies carry every entry.)
+  const bool flagged = remembered_.size() == neighbor_.size();
+  const auto keep = [&](std::uint32_t e) { return every_entry || (flagged ? remembered_[e] != 0 : memory.active(e)); };
   // Counting sort of the kept entries by the global id of their row.
   c.start.assign(gid_limit + 1, 0);
   for (std::size_t i = 0; i < rows(); ++i)
