@@ -1,8 +1,8 @@
 #pragma once
 // The sphere pair loop over a range of neighbour-list rows, in two passes over batches of
 // entries: a distance test that gathers the touching entries, then the contact law on those
-// only. Touching and apart entries alternate at random (about 40 % touch in a dense flow);
-// split, the first pass is a short loop with one rare branch, and the second runs the same
+// only. Touching and apart entries alternate at random (one in four or five touches in the
+// chute); split, the first pass is a short loop with one rare branch, and the second runs the same
 // path for every contact, which lets the elastic-spring law run four contacts per vector
 // instruction (sphere_elastic_batch.h).
 #include <cstdint>
