@@ -36,10 +36,6 @@ class CellGrid {
   // Particles of one cell, in index order.
   const std::uint32_t* begin(std::int64_t cell) const { return items_.data() + start_[cell]; }
   const std::uint32_t* end(std::int64_t cell) const { return items_.data() + start_[cell + 1]; }
-  // Cells along the fastest axis are consecutive, so a run of them is one range of items:
-  // the particles of cells [first_cell, last_cell] in linear order.
-  const std::uint32_t* run_begin(std::int64_t first_cell) const { return begin(first_cell); }
-  const std::uint32_t* run_end(std::int64_t last_cell) const { return end(last_cell); }
 
  private:
   Vec3 origin_;

@@ -70,7 +70,8 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
       const std::uint32_t gi = p.gid[i];
       const int si = ci[s_axis];
       // The slab and the next one (pairs point up the slab axis), and in each the 3 x 3 cells
-      // around i; the three cells along the fastest axis q are one run of items.
+      // around i; cells along the fastest axis q are consecutive, so the three are one range
+      // of items, from begin() of the first to end() of the last.
       CellCoord c = ci;
       const int q_lo = std::max(ci[q_axis] - 1, grid.first(q_axis)), q_hi = std::min(ci[q_axis] + 1, grid.last(q_axis));
       for (c[s_axis] = si; c[s_axis] <= std::min(si + 1, grid.last(s_axis)); ++c[s_axis]) {
@@ -78,9 +79,9 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
         for (c[p_axis] = std::max(ci[p_axis] - 1, grid.first(p_axis));
              c[p_axis] <= std::min(ci[p_axis] + 1, grid.last(p_axis)); ++c[p_axis]) {
           c[q_axis] = q_lo;
-          const std::uint32_t* it = grid.run_begin(grid.linear(c));
+          const std::uint32_t* it = grid.begin(grid.linear(c));
           c[q_axis] = q_hi;
-          const std::uint32_t* const run_end = grid.run_end(grid.linear(c));
+          const std::uint32_t* const run_end = grid.end(grid.linear(c));
           for (; it != run_end; ++it) {
             const std::uint32_t j = *it;
             if (j == i) continue;
@@ -153,8 +154,7 @@ CarriedContacts PairList::carry(const std::vector<std::uint32_t>& gid, std::size
   CarriedContacts c;
   // The byte flags kept by the sphere pair loop say the same as the memories (a zero flag
   // means a zero memory) in a twenty-fourth of the bytes. (Shaped bodies carry every entry.)
-  const bool flagged = remembered_.size() == neighbor_.size();
-  const auto keep = [&](std::uint32_t e) { return every_entry || (flagged ? remembered_[e] != 0 : memory.active(e)); };
+  const auto keep = [&](std::uint32_t e) { return every_entry || remembered_[e] != 0; };
   // Counting sort of the kept entries by the global id of their row.
   c.start.assign(gid_limit + 1, 0);
   for (std::size_t i = 0; i < rows(); ++i)

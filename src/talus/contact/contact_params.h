@@ -25,7 +25,6 @@ struct DampingLaw {
     if (per_sqrt_reduced_mass != 0) eta += per_sqrt_reduced_mass * std::sqrt(reduced_mass);
     return eta;
   }
-  bool is_plain() const { return per_reduced_mass == 0 && per_sqrt_reduced_mass == 0; }  ///< no mass terms
   bool is_zero() const {
     return coefficient == 0 && per_reduced_mass == 0 && per_sqrt_reduced_mass == 0;
   }

@@ -6,8 +6,8 @@
 namespace talus {
 
 void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, const Vec3* __restrict velocity,
-                          const Vec3* __restrict spin,
-                          const double* __restrict radius, const double* __restrict inv_mass,
+                          const Vec3* __restrict spin, const double* __restrict radius,
+                          const double* __restrict inv_mass,
                           const std::int32_t* __restrict species, const ContactTable& table,
                           Vec3* __restrict spring, double dt) {
   constexpr std::uint32_t N = ContactBatch::kSize;
@@ -15,7 +15,8 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
   // Whole vectors only: the padding lanes repeat the last contact and are never written back,
   // so every contact goes through the same instructions wherever it sits in a batch.
   const std::uint32_t lanes = std::min(N, (n + 7) & ~7u);
-  alignas(64) double dx[N], dy[N], dz[N], dist2[N], ri[N], rj[N], vx[N], vy[N], vz[N], wix[N], wiy[N], wiz[N], wjx[N], wjy[N], wjz[N];
+  alignas(64) double dx[N], dy[N], dz[N], dist2[N], ri[N], rj[N];
+  alignas(64) double vx[N], vy[N], vz[N], wix[N], wiy[N], wiz[N], wjx[N], wjy[N], wjz[N];
   alignas(64) double sx[N], sy[N], sz[N], kn[N], eta_n[N], kt[N], eta_t[N], mu[N];
   for (std::uint32_t k = 0; k < lanes; ++k) {
     const std::uint32_t c = std::min(k, n - 1);
@@ -42,8 +43,7 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
     sy[k] = s.y;
     sz[k] = s.z;
     const ContactParams& p = table.pair(species[i], species[j]);
-    const bool by_mass = !p.normal_damping.is_plain() || !p.tangential_damping.is_plain();
-    const double reduced_mass = by_mass ? 1.0 / (inv_mass[i] + inv_mass[j]) : 0.0;
+    const double reduced_mass = 1.0 / (inv_mass[i] + inv_mass[j]);
     kn[k] = p.normal_stiffness;
     eta_n[k] = p.normal_damping.at(reduced_mass);
     kt[k] = p.tangential_stiffness;
