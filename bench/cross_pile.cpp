@@ -160,6 +160,7 @@ void run_cross_pile(const CrossPileOptions& o, void (*metric)(const char*, doubl
   metric("crosspile_static_2t", s2.wall, "us");
   metric("crosspile_static_speedup_2t", s1.wall / s2.wall, "x");
   profile(*w, o, "crosspile_static", metric);
+  if (o.static_only) return;
   // Flowing: the x+ wall goes, the pile slumps out of the box.
   Wall& side = w->walls_mutable()[1];
   side.motion.kind = WallMotion::Kind::removed;

@@ -69,12 +69,14 @@ struct Options {
   int gen_threads = 0;             ///< threads for cache generation; 0: omp_get_max_threads()
   std::string probe;               ///< internal: run the memory probe of this case and exit
   std::size_t crosses = 2000;      ///< crosses in the cross pile (--only crosspile)
+  bool static_only = false;        ///< cross pile: time the static state only
 };
 
 void usage() {
   std::fprintf(stderr,
                "usage: talus-bench [--quick] [--cache DIR] [--only chute4k|chute32k|crosspile] [--steps4k N] [--steps32k N]\n"
-               "                   [--crosses N] (the cross pile runs only with --only crosspile: it settles for minutes)\n"
+               "                   [--crosses N] [--static-only] (the cross pile runs only with --only crosspile:\n"
+               "                   it settles for minutes; --static-only skips its flowing state)\n"
                "                   [--warmup N] [--reps N] [--flow-time T] [--gen-threads N]\n"
                "       talus-bench --micro [Google Benchmark flags]\n");
 }
@@ -98,6 +100,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--flow-time") o.flow_time = std::stod(value());
     else if (a == "--gen-threads") o.gen_threads = std::stoi(value());
     else if (a == "--crosses") o.crosses = static_cast<std::size_t>(std::stoul(value()));
+    else if (a == "--static-only") o.static_only = true;
     else if (a == "--memory-probe") o.probe = value();
     else if (a == "--help" || a == "-h") { usage(); std::exit(0); }
     else throw std::invalid_argument("unknown argument " + a);
@@ -282,6 +285,7 @@ int main(int argc, char** argv) {
       CrossPileOptions c;
       c.crosses = o.crosses;
       c.cache = o.cache;
+      c.static_only = o.static_only;
       run_cross_pile(c, [](const char* name, double value, const char* unit) { metric(name, value, unit); });
       return 0;
     }

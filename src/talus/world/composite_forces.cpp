@@ -68,15 +68,16 @@ struct PairMotion {
 // The SAT of two touching boxes. A lasting contact reuses last step's axis, tested alone, while
 // its budget proves no other axis can have taken over; the full test renews the budget.
 BoxBoxSat lasting_box_sat(const PlacedPart& pa, const PlacedPart& pb, int warm_axis, const PairMotion& motion,
-                          AxisBudget& budget) {
+                          PartBudget& budget) {
   BoxBoxSat sat;
   if (warm_axis >= 0 && warm_axis == budget.axis && motion.travelled < budget.until &&
       box_box_sat_on_axis(pa.box, pb.box, warm_axis, sat))
     return sat;
   sat = box_box_sat(pa.box, pb.box, warm_axis);
-  budget.axis = sat.separated ? -1 : sat.axis;
-  if (!sat.separated)
-    budget.until = motion.travelled + box_box_axis_reserve(pa.box, pb.box, sat.axis, motion.turn_per_travel);
+  if (sat.separated)
+    budget.sleep(motion.travelled, 0.0);  // the caller extends it by the gap
+  else
+    budget = {motion.travelled + box_box_axis_reserve(pa.box, pb.box, sat.axis, motion.turn_per_travel), sat.axis};
   return sat;
 }
 
@@ -93,7 +94,7 @@ int touching_points(const ContactManifold& m, PointGeometry out[4]) {
 // point, *gap is a lower bound of the parts' distance when the test found one, else 0.
 int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a, const CompositePart& b,
                 const PlacedPart& pb, const Quat& body_b, bool manifold, const SubContact* previous,
-                const PairMotion& motion, AxisBudget& axis_budget, PointGeometry out[4], double* gap) {
+                const PairMotion& motion, PartBudget& budget, PointGeometry out[4], double* gap) {
   *gap = 0;
   ContactCache warm;
   if (previous) warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
@@ -102,7 +103,7 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
     // memset and a memmove of its ~400 bytes per touching part pair.
     if (pa.is_box && pb.is_box) {
       const BoxBoxSat sat =
-          lasting_box_sat(pa, pb, previous ? sat_axis_of(previous->feature) : -1, motion, axis_budget);
+          lasting_box_sat(pa, pb, previous ? sat_axis_of(previous->feature) : -1, motion, budget);
       if (sat.separated) {
         *gap = -sat.depth;
         return 0;
@@ -214,7 +215,7 @@ void prefetch_lines(const void* data, std::size_t bytes) {
 
 template <TangentialModel Model>
 ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt,
-                                    double travelled, double* part_budget, AxisBudget* axis_budget, double& gap) {
+                                    double travelled, PartBudget* part_budgets, double& gap) {
   gap = 0;
   const bool profile = composite_stats_enabled();
   const std::uint64_t t_start = ticks(profile);
@@ -257,9 +258,9 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
     for (std::size_t b = 0; b < nj; ++b) {
       // Found apart by more than the two bodies have moved since: still apart, by at least
       // what is left of the budget.
-      double& budget = part_budget[a * nj + b];
-      if (travelled < budget) {
-        least_gap = std::min(least_gap, budget - travelled);
+      PartBudget& budget = part_budgets[a * nj + b];
+      if (budget.asleep(travelled)) {
+        least_gap = std::min(least_gap, budget.until - travelled);
         continue;
       }
       const PlacedPart& pb = placed_j[b];
@@ -271,7 +272,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       if (d2 >= reach * reach) {
         const double capsule_gap = std::sqrt(d2) - reach;
         least_gap = std::min(least_gap, capsule_gap);
-        budget = travelled + capsule_gap;
+        budget.sleep(travelled, capsule_gap);
         continue;
       }
       ++n_narrow;
@@ -282,9 +283,9 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       double part_gap = 0;
       const int n = part_points(shape_a, pa, p.orientation[i], shape_b, pb, p.orientation[j], settings_.contact_manifold,
                                 had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, pair_motion,
-                                axis_budget[a * nj + b], points.data(), &part_gap);
+                                budget, points.data(), &part_gap);
       least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
-      if (n == 0 && part_gap > 0) budget = travelled + part_gap;
+      if (n == 0 && part_gap > 0) budget.sleep(travelled, part_gap);
       const std::uint64_t t2 = ticks(profile);
       t_narrow += t2 - t1;
       for (int k = 0; k < n; ++k) {
@@ -437,8 +438,7 @@ void World::composite_pair_forces(double memory_dt) {
           ContactResult r;
           if (p.shape[i] != 0 || p.shape[j] != 0) {
             double gap = 0;
-            r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, travelled, budgets_.parts(e), budgets_.axes(e),
-                                      gap);
+            r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, travelled, budgets_.parts(e), gap);
             if (pair_sub_[e].empty()) {
               budget[e] = travelled + gap;
               continue;
@@ -468,8 +468,8 @@ void World::composite_pair_forces(double memory_dt) {
 }
 
 #define TALUS_INSTANTIATE(M)                                                                                  \
-  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, SubContactList&, double, double, double*, \
-                                                  AxisBudget*, double&);                                      \
+  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, SubContactList&, double, double, \
+                                                  PartBudget*, double&);                                      \
   template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&, SubContactList&, double); \
   template void World::composite_pair_forces<M>(double);
 TALUS_INSTANTIATE(TangentialModel::memory)

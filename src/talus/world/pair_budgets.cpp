@@ -16,8 +16,7 @@ void PairBudgets::reset(const PairList& list, const ParticleStore& p, const std:
       n += parts_of(i) * parts_of(list.neighbor(e));
     }
   part_begin_[list.entries()] = n;
-  part_.assign(n, 0.0);
-  axis_.assign(n, AxisBudget{});
+  part_.assign(n, PartBudget{});
 }
 
 }  // namespace talus

@@ -6,7 +6,7 @@
 // Each entry has one budget for its two bodies and one per pair of their convex parts: a body
 // pair in contact (two crosses touching by one arm) then still skips its part pairs that were
 // found apart, instead of running their capsule test and box SAT every step. Its touching box
-// pairs keep their SAT axis the same way (AxisBudget).
+// pairs keep their SAT axis the same way (PartBudget::axis).
 #include <cstdint>
 #include <vector>
 
@@ -16,11 +16,19 @@
 
 namespace talus {
 
-// A touching box pair's SAT axis, sure to stay the SAT's answer while the two bodies' travels
-// sum to less than `until` (box_box_axis_reserve).
-struct AxisBudget {
+// A pair of convex parts is either apart or touching, so one bound serves both budgets: with
+// axis < 0 the pair sleeps while the two bodies' travels sum to less than `until`; with axis >= 0
+// the parts touched and, being boxes, their SAT axis stays the SAT's answer until then
+// (box_box_axis_reserve). One 16-byte record per part pair: a cross pair's four share a line.
+struct PartBudget {
   double until = 0;  ///< m, on the scale of PlacedBodies::travel
-  int axis = -1;
+  std::int32_t axis = -1;
+
+  bool asleep(double travelled) const { return axis < 0 && travelled < until; }
+  void sleep(double travelled, double gap) {
+    axis = -1;
+    until = travelled + gap;
+  }
 };
 
 class PairBudgets {
@@ -32,15 +40,12 @@ class PairBudgets {
   void clear() { body_.clear(); }
   double* body() { return body_.data(); }
   // Entry e's part-pair budgets, row-major: part a of i with part b of j at a * parts(j) + b.
-  double* parts(std::size_t e) { return part_.data() + part_begin_[e]; }
-  // Entry e's part-pair axis budgets, laid out as parts(e).
-  AxisBudget* axes(std::size_t e) { return axis_.data() + part_begin_[e]; }
+  PartBudget* parts(std::size_t e) { return part_.data() + part_begin_[e]; }
 
  private:
   std::vector<double> body_;
   std::vector<std::uint32_t> part_begin_;
-  std::vector<double> part_;
-  std::vector<AxisBudget> axis_;
+  std::vector<PartBudget> part_;
 };
 
 }  // namespace talus

@@ -141,7 +141,7 @@ class World {
   template <TangentialModel Model> void composite_pair_forces(double memory_dt);
   template <TangentialModel Model>
   ContactResult composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt,
-                               double travelled, double* part_budget, AxisBudget* axis_budget, double& gap);
+                               double travelled, PartBudget* part_budgets, double& gap);
   template <TangentialModel Model>
   ContactResult composite_wall(std::size_t i, const Wall& wall, const Vec3& origin, const Vec3& wall_velocity,
                                SubContactList& contacts, double memory_dt);
