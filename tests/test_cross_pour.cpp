@@ -19,9 +19,10 @@ namespace {
 
 double largest_overlap(const World& w) {
   double m = 0;
-  for (const auto& list : {std::cref(w.pair_sub_contacts()), std::cref(w.wall_sub_contacts())})
-    for (const SubContactList& entry : list.get())
-      for (const SubContact& s : entry) m = std::max(m, s.overlap);
+  for (std::size_t e = 0; e < w.pair_sub_contacts().entries(); ++e)
+    for (const SubContact& s : w.pair_sub_contacts().of(e)) m = std::max(m, s.overlap);
+  for (const SubContactList& entry : w.wall_sub_contacts())
+    for (const SubContact& s : entry) m = std::max(m, s.overlap);
   return m;
 }
 

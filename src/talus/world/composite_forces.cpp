@@ -120,13 +120,13 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
 }
 
 // Finds the memory of a contact point in last step's list.
-const SubContact* find_previous(const SubContactList& previous, const SubContact& key) {
+const SubContact* find_previous(std::span<const SubContact> previous, const SubContact& key) {
   for (const SubContact& s : previous)
     if (s.same_key(key)) return &s;
   return nullptr;
 }
 
-const SubContact* find_part_pair(const SubContactList& previous, std::uint16_t a, std::uint16_t b) {
+const SubContact* find_part_pair(std::span<const SubContact> previous, std::uint16_t a, std::uint16_t b) {
   for (const SubContact& s : previous)
     if (s.part_i == a && s.part_j == b) return &s;
   return nullptr;
@@ -193,8 +193,8 @@ double body_box_gap(const CompositeShape& si, const BodyFrame& bi, const Composi
   return 0;
 }
 
-// Last step's list, swapped aside while this step's is written into `contacts`, which comes
-// back empty (per thread; buffers trade places, no copy).
+// A wall entry's list of last step, swapped aside while this step's is written into `contacts`,
+// which comes back empty (per thread; buffers trade places, no copy).
 const SubContactList& previous_scratch(SubContactList& contacts) {
   thread_local SubContactList previous;
   previous.clear();
@@ -214,8 +214,9 @@ void prefetch_lines(const void* data, std::size_t bytes) {
 }  // namespace
 
 template <TangentialModel Model>
-ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt,
-                                    double travelled, PartBudget* part_budgets, double& gap) {
+ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<const SubContact> previous,
+                                    std::vector<SubContact>& contacts, double memory_dt, double travelled,
+                                    PartBudget* part_budgets, double& gap) {
   gap = 0;
   const bool profile = composite_stats_enabled();
   const std::uint64_t t_start = ticks(profile);
@@ -232,7 +233,6 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   const PlacedPart* placed_i = has_box_i ? placed_.parts(i) : sphere_i.data();
   const PlacedPart* placed_j = has_box_j ? placed_.parts(j) : sphere_j.data();
   if (has_box_i && has_box_j && (gap = body_box_gap(si, placed_.body(i), sj, placed_.body(j))) > 0) {
-    if (!contacts.empty()) contacts.clear();
     if (profile) {
       CompositeStats& st = composite_stats_slot();
       ++st.body_pairs;
@@ -246,8 +246,8 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
   const ContactMotion motion{p.velocity[i], p.angular_velocity[i], p.velocity[j], p.angular_velocity[j]};
   // A body turning by theta moves a point at its bounding radius R by 2 R sin(theta / 2) >= 2 R theta / pi.
   const PairMotion pair_motion{travelled, 0.5 * std::numbers::pi / std::min(p.radius[i], p.radius[j])};
-  const bool had_contacts = !contacts.empty();
-  const SubContactList& previous = previous_scratch(contacts);
+  const bool had_contacts = !previous.empty();
+  const std::size_t first = contacts.size();
 
   ContactResult total;
   double least_gap = std::numeric_limits<double>::infinity();  // over the part pairs, while all are apart
@@ -305,7 +305,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, SubContactList
       t_force += t0 - t2;
     }
   }
-  if (contacts.empty() && least_gap > 0 && least_gap < std::numeric_limits<double>::infinity()) gap = least_gap;
+  if (contacts.size() == first && least_gap > 0 && least_gap < std::numeric_limits<double>::infinity()) gap = least_gap;
   if (profile) {
     const std::uint64_t t_end = ticks(profile);
     t_cull += t_end - t0;
@@ -386,11 +386,13 @@ void World::composite_pair_forces(double memory_dt) {
   ParticleStore& p = particles_;
   PairList& list = pairs_;
   ContactMemory& mem = list.memory;
-  constexpr long kRowsPerBlock = 16;
+  constexpr long kRowsPerBlock = SubContactStore::kRowsPerBlock;
   const long rows = static_cast<long>(list.rows());
   const long blocks = (rows + kRowsPerBlock - 1) / kRowsPerBlock;
   if (block_loads_.size() < static_cast<std::size_t>(blocks)) block_loads_.resize(blocks);
   if (!budgets_.matches(list)) budgets_.reset(list, p, shapes_);
+  if (pair_sub_.entries() != list.entries() || pair_sub_.blocks() != static_cast<std::size_t>(blocks))
+    pair_sub_.assign(list, [](std::size_t, std::vector<SubContact>&) {});  // no points yet
   double* budget = budgets_.body();
   const std::size_t bodies = p.position.size();  // ghosts receive loads too (folded later)
   auto range_of = [bodies](std::uint32_t body) { return static_cast<std::size_t>(body) * kLoadRanges / bodies; };
@@ -404,20 +406,22 @@ void World::composite_pair_forces(double memory_dt) {
       BlockLoads& loads = block_loads_[block];
       for (std::vector<BodyLoad>& range : loads) range.clear();
       const long last = std::min(rows, (block + 1) * kRowsPerBlock);
-      // What the awake pairs of the block will read first lies in scattered heap lines (last
-      // step's contact points, the part-pair budgets, the neighbour's placed parts): asking for
-      // them all at once lets the cache misses overlap instead of stalling one pair at a time.
+      // What the awake pairs of the block will read first lies in scattered lines (the part-pair
+      // budgets, the neighbour's placed parts): asking for them all at once lets the cache misses
+      // overlap instead of stalling one pair at a time. Last step's contact points are one
+      // stream per block (SubContactStore).
       for (long row = block * kRowsPerBlock; row < last; ++row) {
         const auto i = static_cast<std::uint32_t>(row);
         for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
           const std::uint32_t j = list.neighbor(e);
           if (placed_.travel(i) + placed_.travel(j) < budget[e]) continue;
           __builtin_prefetch(budgets_.parts(e));
-          prefetch_lines(pair_sub_[e].data(), pair_sub_[e].size() * sizeof(SubContact));
           if (p.shape[j] != 0)  // the two lines of every part
             prefetch_lines(placed_.parts(j), placed_.part_count(j) * sizeof(PlacedPart));
         }
       }
+      pair_sub_.start_block(block);
+      std::vector<SubContact>& points = pair_sub_.next_points(block);
       for (long row = block * kRowsPerBlock; row < last; ++row) {
         const auto i = static_cast<std::uint32_t>(row);
         Vec3 fi, ti;
@@ -430,7 +434,7 @@ void World::composite_pair_forces(double memory_dt) {
           const double reach = p.radius[i] + p.radius[j];
           const double dist2 = norm2(d);
           if (dist2 >= reach * reach) {  // bounding spheres apart: a later contact starts afresh
-            if (!pair_sub_[e].empty()) pair_sub_[e].clear();
+            pair_sub_.forget(e);
             if (mem.active(e)) mem.clear(e);
             budget[e] = travelled + (std::sqrt(dist2) - reach);
             continue;
@@ -438,8 +442,10 @@ void World::composite_pair_forces(double memory_dt) {
           ContactResult r;
           if (p.shape[i] != 0 || p.shape[j] != 0) {
             double gap = 0;
-            r = composite_pair<Model>(i, j, pair_sub_[e], memory_dt, travelled, budgets_.parts(e), gap);
-            if (pair_sub_[e].empty()) {
+            const std::size_t first = points.size();
+            r = composite_pair<Model>(i, j, pair_sub_.of(e), points, memory_dt, travelled, budgets_.parts(e), gap);
+            pair_sub_.record(e, first, points.size());
+            if (points.size() == first) {
               budget[e] = travelled + gap;
               continue;
             }
@@ -454,6 +460,7 @@ void World::composite_pair_forces(double memory_dt) {
         }
         if (fi != Vec3{} || ti != Vec3{}) loads[range_of(i)].push_back({i, fi, ti});
       }
+      pair_sub_.finish_block(block);
       block_schedule_.record(block, __rdtsc() - block_start);
     }
 #pragma omp barrier
@@ -468,8 +475,8 @@ void World::composite_pair_forces(double memory_dt) {
 }
 
 #define TALUS_INSTANTIATE(M)                                                                                  \
-  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, SubContactList&, double, double, \
-                                                  PartBudget*, double&);                                      \
+  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, std::span<const SubContact>, \
+                                                  std::vector<SubContact>&, double, double, PartBudget*, double&);                                      \
   template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&, SubContactList&, double); \
   template void World::composite_pair_forces<M>(double);
 TALUS_INSTANTIATE(TangentialModel::memory)

@@ -50,7 +50,7 @@ Diagnostics World::diagnostics() const {
   }
   d.mean_speed = mobile ? speed_sum / mobile : 0;
   if (!ready_) return d;
-  auto add_points = [&](const SubContactList& list, const ContactParams& c, double radius) {
+  auto add_points = [&](std::span<const SubContact> list, const ContactParams& c, double radius) {
     for (const SubContact& s : list) {
       d.elastic_normal += 0.5 * s.share * c.normal_stiffness * s.overlap * s.overlap;
       d.elastic_tangential += 0.5 * s.share * c.tangential_stiffness * norm2(s.spring);
@@ -61,8 +61,8 @@ Diagnostics World::diagnostics() const {
     for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
       const std::uint32_t j = pairs_.neighbor(e);
       if (p.shape[i] != 0 || p.shape[j] != 0) {
-        d.contacts += pair_sub_[e].size();
-        add_points(pair_sub_[e], table_.pair(p.species[i], p.species[j]), std::min(p.radius[i], p.radius[j]));
+        d.contacts += pair_sub_.of(e).size();
+        add_points(pair_sub_.of(e), table_.pair(p.species[i], p.species[j]), std::min(p.radius[i], p.radius[j]));
         continue;
       }
       const double reach = p.radius[i] + p.radius[j];
@@ -130,7 +130,7 @@ Snapshot World::snapshot() const {
     for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
       const std::uint32_t j = pairs_.neighbor(e);
       if (p.shape[i] != 0 || p.shape[j] != 0) {
-        for (const SubContact& sc : pair_sub_[e]) {
+        for (const SubContact& sc : pair_sub_.of(e)) {
           ContactRecord rec;
           rec.i = record_of[i];
           rec.j = record_of[owner(j)];

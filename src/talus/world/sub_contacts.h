@@ -3,6 +3,8 @@
 // own memory, keyed by (part of i, part of j, feature) so that history follows a contact point
 // from step to step even as the manifold changes.
 #include <cstdint>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "talus/math/vec3.h"
@@ -24,16 +26,14 @@ struct SubContact {
 
 using SubContactList = std::vector<SubContact>;
 
-// The list seen from the other body: parts swapped, memories negated.
-inline SubContactList reversed(const SubContactList& in) {
-  SubContactList out = in;
-  for (SubContact& s : out) {
+// The points seen from the other body: parts swapped, memories negated.
+inline void reverse_points(std::span<SubContact> points) {
+  for (SubContact& s : points) {
     std::swap(s.part_i, s.part_j);
     s.spring = -s.spring;
     s.normal_prev = -s.normal_prev;
     s.force = -s.force;
   }
-  return out;
 }
 
 }  // namespace talus

@@ -179,13 +179,17 @@ void World::rebuild() {
   pairs_.restore_memory(carried, p.gid, has_composites() ? &origin : nullptr);
   carried = CarriedContacts{};
   if (has_composites()) {
-    std::vector<SubContactList> fresh(pairs_.entries());
-    for (std::size_t e = 0; e < fresh.size(); ++e) {
+    SubContactStore fresh;
+    fresh.assign(pairs_, [&](std::size_t e, std::vector<SubContact>& out) {
       const std::int64_t o = origin[e];
-      if (o > 0 && static_cast<std::size_t>(o - 1) < pair_sub_.size()) fresh[e] = std::move(pair_sub_[o - 1]);
-      if (o < 0 && static_cast<std::size_t>(-o - 1) < pair_sub_.size()) fresh[e] = reversed(pair_sub_[-o - 1]);
-    }
-    pair_sub_.swap(fresh);
+      const std::size_t old = static_cast<std::size_t>(o > 0 ? o - 1 : -o - 1);
+      if (o == 0 || old >= pair_sub_.entries()) return;
+      const std::size_t first = out.size();
+      const std::span<const SubContact> points = pair_sub_.of(old);
+      out.insert(out.end(), points.begin(), points.end());
+      if (o < 0) reverse_points(std::span<SubContact>(out).subspan(first));
+    });
+    pair_sub_ = std::move(fresh);
   }
 
   WallContactList old_walls = std::move(wall_pairs_);

@@ -19,6 +19,7 @@
 #include "talus/world/phase_timer.h"
 #include "talus/world/pair_budgets.h"
 #include "talus/world/placed_bodies.h"
+#include "talus/world/sub_contact_store.h"
 #include "talus/world/sub_contacts.h"
 #include "talus/world/wall.h"
 #include "talus/world/wall_contacts.h"
@@ -84,7 +85,7 @@ class World {
   int add_shape(const CompositeShape& shape);
   const std::vector<CompositeShape>& shapes() const { return shapes_; }
   // Contact points of non-spherical pairs and wall contacts, per list entry (empty for spheres).
-  const std::vector<SubContactList>& pair_sub_contacts() const { return pair_sub_; }
+  const SubContactStore& pair_sub_contacts() const { return pair_sub_; }
   const std::vector<SubContactList>& wall_sub_contacts() const { return wall_sub_; }
   const WallContactList& wall_list() const { return wall_pairs_; }
   ContactTable& contacts() { return table_; }
@@ -140,8 +141,9 @@ class World {
   template <TangentialModel Model> void wall_forces(double memory_dt);
   template <TangentialModel Model> void composite_pair_forces(double memory_dt);
   template <TangentialModel Model>
-  ContactResult composite_pair(std::size_t i, std::size_t j, SubContactList& contacts, double memory_dt,
-                               double travelled, PartBudget* part_budgets, double& gap);
+  ContactResult composite_pair(std::size_t i, std::size_t j, std::span<const SubContact> previous,
+                               std::vector<SubContact>& contacts, double memory_dt, double travelled,
+                               PartBudget* part_budgets, double& gap);
   template <TangentialModel Model>
   ContactResult composite_wall(std::size_t i, const Wall& wall, const Vec3& origin, const Vec3& wall_velocity,
                                SubContactList& contacts, double memory_dt);
@@ -156,7 +158,8 @@ class World {
   std::vector<Vec3> wall_force_;
   ContactTable table_;
   std::vector<CompositeShape> shapes_ = std::vector<CompositeShape>(1);
-  std::vector<SubContactList> pair_sub_, wall_sub_;
+  SubContactStore pair_sub_;
+  std::vector<SubContactList> wall_sub_;
   PlacedBodies placed_;  ///< parts of the rigid bodies in the world, this step
   // Contributions to forces and torques per block of rows, binned by the receiving body's range
   // of indices, applied after the pass range by range (in parallel) and block by block within

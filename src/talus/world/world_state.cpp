@@ -68,7 +68,7 @@ WorldState World::capture_state() {
       s.pair_gid_j.push_back(gid[pairs_.neighbor(e)]);
     }
   s.pair_memory = pairs_.memory;
-  s.pair_sub = pair_sub_;
+  s.pair_sub = pair_sub_.lists();
   for (std::size_t i = 0; i < wall_pairs_.rows(); ++i)
     for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e) {
       s.wall_gid.push_back(gid[i]);
@@ -127,8 +127,8 @@ void World::restore_state(const WorldState& s) {
   check_memory_size(s.pair_memory, pairs_.memory, "particle");
   pairs_.memory = s.pair_memory;
   pairs_.remark_memories();
-  require(s.pair_sub.size() == pair_sub_.size(), "contact points of rigid bodies do not match the neighbour list");
-  pair_sub_ = s.pair_sub;
+  require(s.pair_sub.size() == pair_sub_.entries(), "contact points of rigid bodies do not match the neighbour list");
+  if (has_composites()) pair_sub_.assign(pairs_, s.pair_sub);
 
   require(wall_pairs_.entries() == s.wall_gid.size() && s.wall_index.size() == s.wall_gid.size() &&
               s.wall_entry_force.size() == s.wall_gid.size(),

@@ -1,0 +1,81 @@
+#pragma once
+// The contact points of the pair list's entries (rigid bodies), stored by blocks of rows.
+//
+// A block's points lie in one buffer, in entry order, so the pass over a block reads last step's
+// points as one stream and appends this step's to a second buffer, and the two trade places when
+// the block is done. One small heap list per entry (the first layout) cost a cache miss on the
+// list header and another on its points for every touching body pair: in a settled pile of
+// crosses, with ~8 points per cross, those misses were a tenth of the step.
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "talus/collide/pair_list.h"
+#include "talus/world/sub_contacts.h"
+
+namespace talus {
+
+class SubContactStore {
+ public:
+  static constexpr std::size_t kRowsPerBlock = 16;  ///< rows of the pair list per block (composite_pair_forces)
+
+  // Lays out one list of points per entry of `list`; `append(e, out)` appends entry e's points
+  // to `out`. The store's blocks then follow the list's rows.
+  template <class Append>
+  void assign(const PairList& list, Append&& append);
+  void assign(const PairList& list, const std::vector<SubContactList>& lists) {
+    assign(list, [&](std::size_t e, std::vector<SubContact>& out) { out.insert(out.end(), lists[e].begin(), lists[e].end()); });
+  }
+  void clear() { *this = SubContactStore{}; }
+
+  std::size_t entries() const { return count_.size(); }
+  std::size_t blocks() const { return blocks_.size(); }
+  std::span<const SubContact> of(std::size_t e) const {
+    return {blocks_[block_of_entry_[e]].current.data() + first_[e], count_[e]};
+  }
+  bool empty(std::size_t e) const { return count_[e] == 0; }
+  std::vector<SubContactList> lists() const;  ///< one list per entry (checkpoints)
+
+  // The pass over block b: start_block, then for each entry in order either forget(e) or
+  // previous(e), append to next_points(b) and record(e, first) with first = its size before,
+  // then finish_block. Blocks are independent: each may run on its own thread.
+  void start_block(std::size_t b) { blocks_[b].next.clear(); }
+  std::vector<SubContact>& next_points(std::size_t b) { return blocks_[b].next; }
+  void record(std::size_t e, std::size_t first, std::size_t end) {
+    first_[e] = static_cast<std::uint32_t>(first);
+    count_[e] = static_cast<std::uint16_t>(end - first);
+  }
+  void forget(std::size_t e) { count_[e] = 0; }
+  void finish_block(std::size_t b) { blocks_[b].current.swap(blocks_[b].next); }
+
+ private:
+  struct Block {
+    std::vector<SubContact> current, next;
+  };
+  std::vector<Block> blocks_;
+  std::vector<std::uint32_t> block_of_entry_;
+  std::vector<std::uint32_t> first_;  ///< offset of the entry's points in its block's current buffer
+  std::vector<std::uint16_t> count_;
+};
+
+template <class Append>
+void SubContactStore::assign(const PairList& list, Append&& append) {
+  const std::size_t rows = list.rows();
+  blocks_.assign((rows + kRowsPerBlock - 1) / kRowsPerBlock, Block{});
+  block_of_entry_.assign(list.entries(), 0);
+  first_.assign(list.entries(), 0);
+  count_.assign(list.entries(), 0);
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    std::vector<SubContact>& out = blocks_[b].current;
+    const std::size_t row_end = std::min(rows, (b + 1) * kRowsPerBlock);
+    for (std::uint32_t e = list.row_begin(b * kRowsPerBlock); e < list.row_end(row_end - 1); ++e) {
+      block_of_entry_[e] = static_cast<std::uint32_t>(b);
+      const std::size_t first = out.size();
+      append(e, out);
+      record(e, first, out.size());
+    }
+  }
+}
+
+}  // namespace talus
