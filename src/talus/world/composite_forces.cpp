@@ -415,7 +415,7 @@ void World::composite_pair_forces(double memory_dt) {
         for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
           const std::uint32_t j = list.neighbor(e);
           if (placed_.travel(i) + placed_.travel(j) < budget[e]) continue;
-          __builtin_prefetch(budgets_.parts(e));
+          budgets_.prefetch_parts(e);
           if (p.shape[j] != 0)  // the two lines of every part
             prefetch_lines(placed_.parts(j), placed_.part_count(j) * sizeof(PlacedPart));
         }

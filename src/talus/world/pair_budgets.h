@@ -41,6 +41,11 @@ class PairBudgets {
   double* body() { return body_.data(); }
   // Entry e's part-pair budgets, row-major: part a of i with part b of j at a * parts(j) + b.
   PartBudget* parts(std::size_t e) { return part_.data() + part_begin_[e]; }
+  // Asks for the lines of entry e's part-pair budgets (a cross pair's 64 bytes may span two).
+  void prefetch_parts(std::size_t e) const {
+    __builtin_prefetch(part_.data() + part_begin_[e]);
+    __builtin_prefetch(part_.data() + part_begin_[e + 1] - 1);
+  }
 
  private:
   std::vector<double> body_;
