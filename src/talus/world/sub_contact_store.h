@@ -37,21 +37,37 @@ class SubContactStore {
   bool empty(std::size_t e) const { return count_[e] == 0; }
   std::vector<SubContactList> lists() const;  ///< one list per entry (checkpoints)
 
-  // The pass over block b: start_block, then for each entry in order either forget(e) or
-  // previous(e), append to next_points(b) and record(e, first) with first = its size before,
-  // then finish_block. Blocks are independent: each may run on its own thread.
-  void start_block(std::size_t b) { blocks_[b].next.clear(); }
+  // The pass over block b, entries in order: start_block(b), then for each entry either
+  // take(e), whose points are appended to next_points(b) and recorded with record(e, first,
+  // end), or forget(e); entries without points may be skipped. Last step's points are read
+  // with a cursor, so the pass touches only the counts of the entries. Blocks are independent:
+  // each may run on its own thread.
+  void start_block(std::size_t b) {
+    blocks_[b].next.clear();
+    blocks_[b].cursor = 0;
+  }
   std::vector<SubContact>& next_points(std::size_t b) { return blocks_[b].next; }
+  std::span<const SubContact> take(std::size_t b, std::size_t e) {
+    Block& block = blocks_[b];
+    const std::span<const SubContact> points{block.current.data() + block.cursor, count_[e]};
+    block.cursor += count_[e];
+    return points;
+  }
+  void forget(std::size_t b, std::size_t e) {
+    blocks_[b].cursor += count_[e];
+    count_[e] = 0;
+  }
   void record(std::size_t e, std::size_t first, std::size_t end) {
     first_[e] = static_cast<std::uint32_t>(first);
     count_[e] = static_cast<std::uint16_t>(end - first);
   }
-  void forget(std::size_t e) { count_[e] = 0; }
-  void finish_block(std::size_t b) { blocks_[b].current.swap(blocks_[b].next); }
+  // Throws if an entry with points was skipped (its points would have been lost).
+  void finish_block(std::size_t b);
 
  private:
   struct Block {
     std::vector<SubContact> current, next;
+    std::size_t cursor = 0;  ///< in current, during a pass
   };
   std::vector<Block> blocks_;
   std::vector<std::uint32_t> block_of_entry_;
