@@ -150,48 +150,11 @@ BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis)
 // Out of line: box_box_sat answers with this same code whenever its answer is the warm axis, so
 // the two agree to the bit and a run gives the same result whether or not it reuses an axis (a
 // restart forgets the budgets).
-// It forms only the entries of R and t that the axis reads (a face axis needs 3 of the 9 dot
-// products of the axes), by the same expressions as SatAxes, so the bits are the same.
 [[gnu::noinline]] bool box_box_sat_on_axis(const OrientedBox& a, const OrientedBox& b, int axis, BoxBoxSat& out) {
-  if (axis < 0 || axis >= 15) return false;
-  constexpr double kBias = 1e-12;  // as SatAxes
-  const Vec3& ha = a.half;
-  const Vec3& hb = b.half;
-  const Vec3 d = b.centre - a.centre;
-  auto R = [&](int i, int j) { return dot(a.axis[i], b.axis[j]); };
-  auto absR = [](double r) { return std::abs(r) + kBias; };
-  auto t = [&](int i) { return dot(d, a.axis[i]); };
+  const SatAxes s(a, b);
   double o = 0;
-  Vec3 normal;
-  if (axis < 3) {
-    const int k = axis;
-    const double tk = t(k);
-    o = ha[k] + hb[0] * absR(R(k, 0)) + hb[1] * absR(R(k, 1)) + hb[2] * absR(R(k, 2)) - std::abs(tk);
-    normal = tk > 0 ? -a.axis[k] : a.axis[k];
-  } else if (axis < 6) {
-    const int j = axis - 3;
-    const double r0 = R(0, j), r1 = R(1, j), r2 = R(2, j);
-    const double tj = t(0) * r0 + t(1) * r1 + t(2) * r2;
-    o = ha[0] * absR(r0) + ha[1] * absR(r1) + ha[2] * absR(r2) + hb[j] - std::abs(tj);
-    normal = tj > 0 ? -b.axis[j] : b.axis[j];
-  } else {
-    const int i = (axis - 6) / 3, j = (axis - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3,
-              j2 = (j + 2) % 3;
-    const double r1 = R(i1, j), r2 = R(i2, j);
-    const double len = std::sqrt(r1 * r1 + r2 * r2);
-    if (!(len > 1e-6)) return false;
-    const double ra = ha[i1] * absR(r2) + ha[i2] * absR(r1);
-    const double rb = hb[j1] * absR(R(i, j2)) + hb[j2] * absR(R(i, j1));
-    const double tl = t(i2) * r1 - t(i1) * r2;
-    o = (ra + rb - std::abs(tl)) / len;
-    const Vec3 L = normalized_or_zero(cross(a.axis[i], b.axis[j]));
-    normal = tl > 0 ? -L : L;
-  }
-  out = BoxBoxSat{};
-  out.separated = o < 0;
-  out.depth = o;
-  out.normal = normal;
-  out.axis = axis;
+  if (!s.overlap(axis, &o)) return false;
+  out = s.result(axis, o, o < 0);
   return true;
 }
 
