@@ -19,10 +19,9 @@ namespace {
 
 double largest_overlap(const World& w) {
   double m = 0;
-  for (std::size_t e = 0; e < w.pair_sub_contacts().entries(); ++e)
-    for (const SubContact& s : w.pair_sub_contacts().of(e)) m = std::max(m, s.overlap);
-  for (const SubContactList& entry : w.wall_sub_contacts())
-    for (const SubContact& s : entry) m = std::max(m, s.overlap);
+  for (const SubContactStore* store : {&w.pair_sub_contacts(), &w.wall_sub_contacts()})
+    for (std::size_t e = 0; e < store->entries(); ++e)
+      for (const SubContact& s : store->of(e)) m = std::max(m, s.overlap);
   return m;
 }
 

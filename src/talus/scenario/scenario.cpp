@@ -188,8 +188,8 @@ Scenario load_scenario(ScenarioFile& f) {
   std::vector<SpeciesInfo> species;
   const bool chute = f.has("chute");
   if (chute) {
-    species.push_back({"flow", 6 / kPi, 0.5});
-    species.push_back({"base", 6 / kPi, 0.5});
+    species.push_back({"flow", 6 / kPi, 0.5, std::nullopt, 0});  // spheres: no rigid body type
+    species.push_back({"base", 6 / kPi, 0.5, std::nullopt, 0});
   }
   for (const std::string& name : f.table_keys("species")) {
     const std::string key = "species." + name;

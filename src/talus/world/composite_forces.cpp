@@ -193,15 +193,6 @@ double body_box_gap(const CompositeShape& si, const BodyFrame& bi, const Composi
   return 0;
 }
 
-// A wall entry's list of last step, swapped aside while this step's is written into `contacts`,
-// which comes back empty (per thread; buffers trade places, no copy).
-const SubContactList& previous_scratch(SubContactList& contacts) {
-  thread_local SubContactList previous;
-  previous.clear();
-  previous.swap(contacts);
-  return previous;
-}
-
 std::uint64_t ticks(bool on) { return on ? __rdtsc() : 0; }
 
 // Asks for the cache lines of [data, data + bytes), at most 8 of them.
@@ -330,14 +321,14 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
 
 template <TangentialModel Model>
 ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3& origin, const Vec3& wall_velocity,
-                                    SubContactList& contacts, double memory_dt) {
+                                    std::span<const SubContact> previous, std::vector<SubContact>& contacts,
+                                    double memory_dt) {
   const ParticleStore& p = particles_;
   thread_local CompositeShape scratch;
   const CompositeShape& si = shape_of(shapes_, p.shape[i], p.radius[i], scratch);
   const ContactParams& params = table_.wall(p.species[i], wall.material);
   const HalfSpace plane{wall.normal, dot(wall.normal, origin)};  // solid behind the wall, normal into the free side
   const ContactMotion motion{p.velocity[i], p.angular_velocity[i], wall_velocity, Vec3{}};
-  const SubContactList& previous = previous_scratch(contacts);
   ContactResult total;
   const PlacedPart* placed = placed_.parts(i);
   for (std::size_t a = 0; a < si.parts.size(); ++a) {
@@ -484,7 +475,8 @@ void World::composite_pair_forces(double memory_dt) {
 #define TALUS_INSTANTIATE(M)                                                                                  \
   template ContactResult World::composite_pair<M>(std::size_t, std::size_t, std::span<const SubContact>, \
                                                   std::vector<SubContact>&, double, double, PartBudget*, double&);                                      \
-  template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&, SubContactList&, double); \
+  template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&,                \
+                                                  std::span<const SubContact>, std::vector<SubContact>&, double);   \
   template void World::composite_pair_forces<M>(double);
 TALUS_INSTANTIATE(TangentialModel::memory)
 TALUS_INSTANTIATE(TangentialModel::elastic_spring)

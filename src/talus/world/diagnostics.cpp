@@ -77,8 +77,8 @@ Diagnostics World::diagnostics() const {
       const Wall& w = walls_[wall_pairs_.wall(e)];
       if (!w.active(time_) || p.inv_mass[i] == 0.0) continue;
       if (p.shape[i] != 0) {
-        d.wall_contacts += wall_sub_[e].size();
-        add_points(wall_sub_[e], table_.wall(p.species[i], w.material), p.radius[i]);
+        d.wall_contacts += wall_sub_.of(e).size();
+        add_points(wall_sub_.of(e), table_.wall(p.species[i], w.material), p.radius[i]);
         continue;
       }
       const Vec3 origin = w.origin_at(time_);
@@ -173,7 +173,7 @@ Snapshot World::snapshot() const {
       const Wall& w = walls_[wall_pairs_.wall(e)];
       if (!w.active(time_) || p.inv_mass[i] == 0.0) continue;
       if (p.shape[i] != 0) {
-        for (const SubContact& sc : wall_sub_[e]) {
+        for (const SubContact& sc : wall_sub_.of(e)) {
           ContactRecord rec;
           rec.i = record_of[i];
           rec.wall = wall_pairs_.wall(e);

@@ -67,47 +67,62 @@ void World::wall_forces(double memory_dt) {
     wall_velocity[w] = walls_[w].velocity_at(t);
     active[w] = walls_[w].active(t);
   }
-  const long n = static_cast<long>(list.rows());
+  const std::size_t n = list.rows();
+  constexpr std::size_t kRows = SubContactStore::kRowsPerBlock;
+  const long blocks = static_cast<long>((n + kRows - 1) / kRows);
+  const bool composites = has_composites();
+  if (composites && (wall_sub_.entries() != list.entries() || wall_sub_.blocks() != static_cast<std::size_t>(blocks)))
+    wall_sub_.assign(list, [](std::size_t, std::vector<SubContact>&) {});  // no points yet
   // Wall contacts crowd into the particles of a few cells (a pile's base, the gate): dynamic
-  // chunks keep both threads busy. Each row writes only its own particle, so any schedule
-  // gives the same result.
-#pragma omp parallel for schedule(dynamic, 64) if (worth_parallel(has_composites() ? 16 * p.owned : p.owned))
-  for (long i = 0; i < n; ++i) {
-    if (p.inv_mass[i] == 0.0) continue;  // fixed particles do not feel walls
-    for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
-      const int w = list.wall(e);
-      const Wall& wall = walls_[w];
-      const double r = p.radius[i];
-      const double gap = dot(p.position[i] - origin[w], wall.normal);
-      list.force_on_wall[e] = {};
-      if (p.shape[i] != 0) {
-        if (!active[w] || gap >= r || (wall.bounded && gap < 0)) {
-          wall_sub_[e].clear();
+  // chunks keep both threads busy. Each row writes only its own particle and each block of rows
+  // its own contact points, so any schedule gives the same result.
+#pragma omp parallel for schedule(dynamic, 4) if (worth_parallel(composites ? 16 * p.owned : p.owned))
+  for (long block = 0; block < blocks; ++block) {
+    const auto b = static_cast<std::size_t>(block);
+    if (composites) wall_sub_.start_block(b);
+    for (std::size_t i = b * kRows; i < std::min(n, (b + 1) * kRows); ++i) {
+      const bool fixed = p.inv_mass[i] == 0.0;  // fixed particles do not feel walls
+      for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
+        const int w = list.wall(e);
+        const Wall& wall = walls_[w];
+        const double r = p.radius[i];
+        const double gap = dot(p.position[i] - origin[w], wall.normal);
+        list.force_on_wall[e] = {};
+        if (p.shape[i] != 0) {
+          if (fixed || !active[w] || gap >= r || (wall.bounded && gap < 0)) {
+            wall_sub_.forget(b, e);
+            continue;
+          }
+          std::vector<SubContact>& points = wall_sub_.next_points(b);
+          const std::size_t first = points.size();
+          const ContactResult res = composite_wall<Model>(i, wall, origin[w], wall_velocity[w], wall_sub_.take(b, e),
+                                                          points, memory_dt);
+          wall_sub_.record(e, first, points.size());
+          p.force[i] += res.force_on_i;
+          p.torque[i] += res.torque_i;
+          list.force_on_wall[e] = -res.force_on_i;
           continue;
         }
-        const ContactResult res = composite_wall<Model>(i, wall, origin[w], wall_velocity[w], wall_sub_[e], memory_dt);
+        if (fixed) continue;
+        if (!active[w] || gap >= r || (wall.bounded && gap < 0) || !wall_faces(wall, origin[w], p.position[i], 0.0)) {
+          mem.clear(e);
+          continue;
+        }
+        ContactGeometry g;
+        g.normal = wall.normal;
+        g.overlap = r - gap;
+        g.arm_i = wall.normal * -(r - 0.5 * g.overlap);  // midpoint of the two deepest points (Huet et al. 2021, Fig. 2)
+        g.inv_distance = 0;                               // a plane's normal does not turn
+        const ContactMotion m{p.velocity[i], p.angular_velocity[i], wall_velocity[w], Vec3{}};
+        const ContactHistoryRef h = memory_ref(mem, e);
+        const ContactResult res = contact_force<Model>(g, m, table_.wall(p.species[i], wall.material),
+                                                       1.0 / p.inv_mass[i], r, memory_dt, h);
         p.force[i] += res.force_on_i;
         p.torque[i] += res.torque_i;
         list.force_on_wall[e] = -res.force_on_i;
-        continue;
       }
-      if (!active[w] || gap >= r || (wall.bounded && gap < 0) || !wall_faces(wall, origin[w], p.position[i], 0.0)) {
-        mem.clear(e);
-        continue;
-      }
-      ContactGeometry g;
-      g.normal = wall.normal;
-      g.overlap = r - gap;
-      g.arm_i = wall.normal * -(r - 0.5 * g.overlap);  // midpoint of the two deepest points (Huet et al. 2021, Fig. 2)
-      g.inv_distance = 0;                               // a plane's normal does not turn
-      const ContactMotion m{p.velocity[i], p.angular_velocity[i], wall_velocity[w], Vec3{}};
-      const ContactHistoryRef h = memory_ref(mem, e);
-      const ContactResult res = contact_force<Model>(g, m, table_.wall(p.species[i], wall.material),
-                                                     1.0 / p.inv_mass[i], r, memory_dt, h);
-      p.force[i] += res.force_on_i;
-      p.torque[i] += res.torque_i;
-      list.force_on_wall[e] = -res.force_on_i;
     }
+    if (composites) wall_sub_.finish_block(b);
   }
   std::fill(wall_force_.begin(), wall_force_.end(), Vec3{});
   for (std::size_t e = 0; e < list.entries(); ++e) wall_force_[list.wall(e)] += list.force_on_wall[e];

@@ -1,5 +1,6 @@
 #pragma once
-// The contact points of the pair list's entries (rigid bodies), stored by blocks of rows.
+// The contact points of a contact list's entries (rigid bodies with each other or with walls),
+// stored by blocks of rows.
 //
 // A block's points lie in one buffer, in entry order, so the pass over a block reads last step's
 // points as one stream and appends this step's to a second buffer, and the two trade places when
@@ -11,20 +12,21 @@
 #include <span>
 #include <vector>
 
-#include "talus/collide/pair_list.h"
 #include "talus/world/sub_contacts.h"
 
 namespace talus {
 
 class SubContactStore {
  public:
-  static constexpr std::size_t kRowsPerBlock = 16;  ///< rows of the pair list per block (composite_pair_forces)
+  static constexpr std::size_t kRowsPerBlock = 16;  ///< list rows per block (composite_pair_forces, wall_forces)
 
-  // Lays out one list of points per entry of `list`; `append(e, out)` appends entry e's points
-  // to `out`. The store's blocks then follow the list's rows.
-  template <class Append>
-  void assign(const PairList& list, Append&& append);
-  void assign(const PairList& list, const std::vector<SubContactList>& lists) {
+  // Lays out one list of points per entry of `list` (a PairList or a WallContactList);
+  // `append(e, out)` appends entry e's points to `out`. The store's blocks then follow the
+  // list's rows.
+  template <class List, class Append>
+  void assign(const List& list, Append&& append);
+  template <class List>
+  void assign(const List& list, const std::vector<SubContactList>& lists) {
     assign(list, [&](std::size_t e, std::vector<SubContact>& out) { out.insert(out.end(), lists[e].begin(), lists[e].end()); });
   }
   void clear() { *this = SubContactStore{}; }
@@ -75,8 +77,8 @@ class SubContactStore {
   std::vector<std::uint16_t> count_;
 };
 
-template <class Append>
-void SubContactStore::assign(const PairList& list, Append&& append) {
+template <class List, class Append>
+void SubContactStore::assign(const List& list, Append&& append) {
   const std::size_t rows = list.rows();
   blocks_.assign((rows + kRowsPerBlock - 1) / kRowsPerBlock, Block{});
   block_of_entry_.assign(list.entries(), 0);

@@ -197,10 +197,13 @@ void World::rebuild() {
   wall_pairs_.build(p, walls_, time_, skin_, layout);
   wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
   if (has_composites()) {
-    std::vector<SubContactList> fresh(wall_pairs_.entries());
-    for (std::size_t e = 0; e < fresh.size(); ++e)
-      if (origin[e] > 0 && static_cast<std::size_t>(origin[e] - 1) < wall_sub_.size()) fresh[e] = std::move(wall_sub_[origin[e] - 1]);
-    wall_sub_.swap(fresh);
+    SubContactStore fresh;
+    fresh.assign(wall_pairs_, [&](std::size_t e, std::vector<SubContact>& out) {
+      if (origin[e] <= 0 || static_cast<std::size_t>(origin[e] - 1) >= wall_sub_.entries()) return;
+      const std::span<const SubContact> points = wall_sub_.of(static_cast<std::size_t>(origin[e] - 1));
+      out.insert(out.end(), points.begin(), points.end());
+    });
+    wall_sub_ = std::move(fresh);
   }
   gid_at_build_ = p.gid;  // owned and ghost ids of this build, for the next transfer
 

@@ -86,7 +86,7 @@ class World {
   const std::vector<CompositeShape>& shapes() const { return shapes_; }
   // Contact points of non-spherical pairs and wall contacts, per list entry (empty for spheres).
   const SubContactStore& pair_sub_contacts() const { return pair_sub_; }
-  const std::vector<SubContactList>& wall_sub_contacts() const { return wall_sub_; }
+  const SubContactStore& wall_sub_contacts() const { return wall_sub_; }
   const WallContactList& wall_list() const { return wall_pairs_; }
   ContactTable& contacts() { return table_; }
   const ContactTable& contacts() const { return table_; }
@@ -146,7 +146,8 @@ class World {
                                PartBudget* part_budgets, double& gap);
   template <TangentialModel Model>
   ContactResult composite_wall(std::size_t i, const Wall& wall, const Vec3& origin, const Vec3& wall_velocity,
-                               SubContactList& contacts, double memory_dt);
+                               std::span<const SubContact> previous, std::vector<SubContact>& contacts,
+                               double memory_dt);
   bool has_composites() const;
   std::size_t integration_cost() const;  ///< per particle, in sphere updates (velocity_verlet.h)
   double interaction_range() const;
@@ -158,8 +159,7 @@ class World {
   std::vector<Vec3> wall_force_;
   ContactTable table_;
   std::vector<CompositeShape> shapes_ = std::vector<CompositeShape>(1);
-  SubContactStore pair_sub_;
-  std::vector<SubContactList> wall_sub_;
+  SubContactStore pair_sub_, wall_sub_;
   PlacedBodies placed_;  ///< parts of the rigid bodies in the world, this step
   // Contributions to forces and torques per block of rows, binned by the receiving body's range
   // of indices, applied after the pass range by range (in parallel) and block by block within

@@ -76,7 +76,7 @@ WorldState World::capture_state() {
     }
   s.wall_memory = wall_pairs_.memory;
   s.wall_entry_force = wall_pairs_.force_on_wall;
-  s.wall_sub = wall_sub_;
+  s.wall_sub = wall_sub_.lists();
   return s;
 }
 
@@ -141,8 +141,8 @@ void World::restore_state(const WorldState& s) {
   check_memory_size(s.wall_memory, wall_pairs_.memory, "wall");
   wall_pairs_.memory = s.wall_memory;
   wall_pairs_.force_on_wall = s.wall_entry_force;
-  require(s.wall_sub.size() == wall_sub_.size(), "wall contact points of rigid bodies do not match the wall list");
-  wall_sub_ = s.wall_sub;
+  require(s.wall_sub.size() == wall_sub_.entries(), "wall contact points of rigid bodies do not match the wall list");
+  if (has_composites()) wall_sub_.assign(wall_pairs_, s.wall_sub);
   ready_ = true;
 }
 
