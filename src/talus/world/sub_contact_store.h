@@ -27,16 +27,18 @@ class SubContactStore {
   void assign(const List& list, Append&& append);
   template <class List>
   void assign(const List& list, const std::vector<SubContactList>& lists) {
-    assign(list, [&](std::size_t e, std::vector<SubContact>& out) { out.insert(out.end(), lists[e].begin(), lists[e].end()); });
+    assign(list, [&](std::size_t e, std::vector<SubContact>& out) {
+      out.insert(out.end(), lists[e].begin(), lists[e].end());
+    });
   }
   void clear() { *this = SubContactStore{}; }
 
   std::size_t entries() const { return count_.size(); }
   std::size_t blocks() const { return blocks_.size(); }
   std::span<const SubContact> of(std::size_t e) const {
+    if (count_[e] == 0) return {};  // first_ of a forgotten entry may point past its block's end
     return {blocks_[block_of_entry_[e]].current.data() + first_[e], count_[e]};
   }
-  bool empty(std::size_t e) const { return count_[e] == 0; }
   std::vector<SubContactList> lists() const;  ///< one list per entry (checkpoints)
 
   // The pass over block b, entries in order: start_block(b), then for each entry either
