@@ -389,8 +389,7 @@ void World::composite_pair_forces(double memory_dt) {
   const long blocks = (rows + kRowsPerBlock - 1) / kRowsPerBlock;
   if (block_loads_.size() < static_cast<std::size_t>(blocks)) block_loads_.resize(blocks);
   if (!budgets_.matches(list)) budgets_.reset(list, p, shapes_);
-  if (pair_sub_.entries() != list.entries() || pair_sub_.blocks() != static_cast<std::size_t>(blocks))
-    pair_sub_.assign(list, [](std::size_t, std::vector<SubContact>&) {});  // no points yet
+  pair_sub_.follow(list);
   double* budget = budgets_.body();
   const std::size_t bodies = p.position.size();  // ghosts receive loads too (folded later)
   auto range_of = [bodies](std::uint32_t body) { return static_cast<std::size_t>(body) * kLoadRanges / bodies; };
@@ -441,7 +440,8 @@ void World::composite_pair_forces(double memory_dt) {
           if (p.shape[i] != 0 || p.shape[j] != 0) {
             double gap = 0;
             const std::size_t first = points.size();
-            r = composite_pair<Model>(i, j, pair_sub_.take(block, e), points, memory_dt, travelled, budgets_.parts(e), gap);
+            r = composite_pair<Model>(i, j, pair_sub_.take(block, e), points, memory_dt, travelled,
+                                      budgets_.parts(e), gap);
             pair_sub_.record(e, first, points.size());
             if (points.size() == first) {
               budget[e] = travelled + gap;
@@ -472,11 +472,11 @@ void World::composite_pair_forces(double memory_dt) {
   }
 }
 
-#define TALUS_INSTANTIATE(M)                                                                                  \
-  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, std::span<const SubContact>, \
-                                                  std::vector<SubContact>&, double, double, PartBudget*, double&);                                      \
-  template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&,                \
-                                                  std::span<const SubContact>, std::vector<SubContact>&, double);   \
+#define TALUS_INSTANTIATE(M)                                                                                    \
+  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, std::span<const SubContact>,          \
+                                                  std::vector<SubContact>&, double, double, PartBudget*, double&); \
+  template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&,             \
+                                                  std::span<const SubContact>, std::vector<SubContact>&, double);  \
   template void World::composite_pair_forces<M>(double);
 TALUS_INSTANTIATE(TangentialModel::memory)
 TALUS_INSTANTIATE(TangentialModel::elastic_spring)

@@ -71,8 +71,7 @@ void World::wall_forces(double memory_dt) {
   constexpr std::size_t kRows = SubContactStore::kRowsPerBlock;
   const long blocks = static_cast<long>((n + kRows - 1) / kRows);
   const bool composites = has_composites();
-  if (composites && (wall_sub_.entries() != list.entries() || wall_sub_.blocks() != static_cast<std::size_t>(blocks)))
-    wall_sub_.assign(list, [](std::size_t, std::vector<SubContact>&) {});  // no points yet
+  if (composites) wall_sub_.follow(list);
   // Wall contacts crowd into the particles of a few cells (a pile's base, the gate): dynamic
   // chunks keep both threads busy. Each row writes only its own particle and each block of rows
   // its own contact points, so any schedule gives the same result.

@@ -31,6 +31,12 @@ class SubContactStore {
       out.insert(out.end(), lists[e].begin(), lists[e].end());
     });
   }
+  // Empty lists laid out on `list`, unless the store already follows its entries and rows.
+  template <class List>
+  void follow(const List& list) {
+    if (entries() != list.entries() || blocks() != (list.rows() + kRowsPerBlock - 1) / kRowsPerBlock)
+      assign(list, [](std::size_t, std::vector<SubContact>&) {});
+  }
   void clear() { *this = SubContactStore{}; }
 
   std::size_t entries() const { return count_.size(); }
