@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "talus/io/input_error.h"
@@ -81,6 +82,8 @@ class StepCounter : public RunObserver {
  public:
   std::string name() const override { return "step_counter"; }
   void after_step(World& /*world*/) override { ++steps_; }
+  // Called at every step, not at the end of batches only.
+  double next_step_event(const World& /*world*/) const override { return -std::numeric_limits<double>::infinity(); }
   void finish(World& /*world*/, const fs::path& /*out*/, nlohmann::json& summary) override {
     summary["observed_steps"] = steps_;
   }

@@ -1,6 +1,7 @@
 #include "talus/integrate/velocity_verlet.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "talus/integrate/rigid_rotation.h"
 #include "talus/world/parallel.h"
@@ -34,6 +35,35 @@ inline bool isotropic(const Vec3& inv_i) { return inv_i.x == inv_i.y && inv_i.y 
   p.angular_velocity[i] += h * q.rotate(hadamard(p.inv_inertia[i], q.rotate_inverse(p.torque[i])));
 }
 
+// a + s b with one rounding, written out: the compiler may fuse a * and a + or not depending on
+// the code around them, and the fused kicks of World::run must give the bits of separate ones.
+inline Vec3 fma(double s, const Vec3& b, const Vec3& a) {
+  return {std::fma(s, b.x, a.x), std::fma(s, b.y, a.y), std::fma(s, b.z, a.z)};
+}
+
+// A sphere: no orientation to track, and its spin takes the torque straight (equal moments).
+inline bool plain_sphere(const ParticleStore& p, std::size_t i, const Vec3& inv_i) {
+  return p.shape[i] == 0 && isotropic(inv_i);
+}
+
+// `kicks` half kicks of a plain sphere on the same force, on local copies (for all the
+// compiler knows the arrays alias, and it would reload and store them at every kick).
+template <int kKicks>
+[[gnu::always_inline]] inline Vec3 kick_sphere(ParticleStore& p, std::size_t i, double inv_m, const Vec3& inv_i,
+                                               double h, const Vec3& gravity) {
+  const Vec3 accel = fma(inv_m, p.force[i], gravity);  // F/m + g
+  const double spin_gain = h * inv_i.x;
+  const Vec3 torque = p.torque[i];
+  Vec3 v = p.velocity[i], w = p.angular_velocity[i];
+  for (int k = 0; k < kKicks; ++k) {
+    v = fma(h, accel, v);
+    w = fma(spin_gain, torque, w);
+  }
+  p.velocity[i] = v;
+  p.angular_velocity[i] = w;
+  return v;
+}
+
 // One mobile particle's half kick: v += h (F/m + g), omega += h I^-1 tau.
 [[gnu::always_inline]] inline void kick_one(ParticleStore& p, std::size_t i, double inv_m, double h,
                                             const Vec3& gravity) {
@@ -61,7 +91,12 @@ void kick(ParticleStore& p, double h, const Vec3& gravity, std::size_t cost) {
   for (std::size_t i = 0; i < n; ++i) {
     const double inv_m = p.inv_mass[i];
     if (inv_m == 0.0) continue;  // fixed particles: infinite mass, unaffected by gravity
-    kick_one(p, i, inv_m, h, gravity);
+    const Vec3 inv_i = p.inv_inertia[i];
+    if (plain_sphere(p, i, inv_i)) {
+      kick_sphere<1>(p, i, inv_m, inv_i, h, gravity);
+    } else {
+      kick_one(p, i, inv_m, h, gravity);
+    }
   }
 }
 
@@ -76,21 +111,38 @@ double drift(ParticleStore& p, double dt, const std::vector<Vec3>& at_build, std
   return max_d2;
 }
 
-double kick_drift(ParticleStore& p, double h, double dt, const Vec3& gravity, const std::vector<Vec3>& at_build,
-                  std::size_t cost) {
+namespace {
+template <int kKicks>
+double kick_drift_pass(ParticleStore& p, double h, double dt, const Vec3& gravity, const std::vector<Vec3>& at_build,
+                       std::size_t cost) {
   const std::size_t n = p.owned;
   double max_d2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel(n * cost))
   for (std::size_t i = 0; i < n; ++i) {
     const double inv_m = p.inv_mass[i];
     if (inv_m != 0.0) {
-      kick_one(p, i, inv_m, h, gravity);
-      max_d2 = std::max(max_d2, drift_one(p, i, dt, at_build[i]));
+      const Vec3 inv_i = p.inv_inertia[i];
+      if (plain_sphere(p, i, inv_i)) {
+        const Vec3 v = kick_sphere<kKicks>(p, i, inv_m, inv_i, h, gravity);
+        const Vec3 x = fma(dt, v, p.position[i]);
+        p.position[i] = x;
+        max_d2 = std::max(max_d2, norm2(x - at_build[i]));
+      } else {
+        for (int k = 0; k < kKicks; ++k) kick_one(p, i, inv_m, h, gravity);
+        max_d2 = std::max(max_d2, drift_one(p, i, dt, at_build[i]));
+      }
     }
     p.force[i] = {};
     p.torque[i] = {};
   }
   return max_d2;
+}
+}  // namespace
+
+double kick_drift(ParticleStore& p, int kicks, double h, double dt, const Vec3& gravity,
+                  const std::vector<Vec3>& at_build, std::size_t cost) {
+  return kicks == 2 ? kick_drift_pass<2>(p, h, dt, gravity, at_build, cost)
+                    : kick_drift_pass<1>(p, h, dt, gravity, at_build, cost);
 }
 
 }  // namespace talus

@@ -21,10 +21,11 @@ void kick(ParticleStore& particles, double h, const Vec3& gravity, std::size_t c
 // owned particle from its position at the last neighbour-list build.
 double drift(ParticleStore& particles, double dt, const std::vector<Vec3>& position_at_build, std::size_t cost = 1);
 
-// kick(h) then drift(dt) in one pass over the particles (the same arithmetic, one sweep of
-// memory instead of two), and force and torque of every owned particle reset to zero for the
-// next force pass. Returns what drift returns.
-double kick_drift(ParticleStore& particles, double h, double dt, const Vec3& gravity,
+// `kicks` times kick(h) (1, or 2 to end the last step and start this one on the same forces),
+// then drift(dt), in one pass over the particles: the same arithmetic as separate passes, one
+// sweep of memory instead of several. Force and torque of every owned particle are reset to
+// zero for the next force pass. Returns what drift returns.
+double kick_drift(ParticleStore& particles, int kicks, double h, double dt, const Vec3& gravity,
                   const std::vector<Vec3>& position_at_build, std::size_t cost = 1);
 
 }  // namespace talus

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "talus/analysis/cg_fields_json.h"
@@ -44,6 +45,12 @@ class ChuteObserver final : public RunObserver {
 
   std::string name() const override { return "chute"; }
   std::string stop_reason() const override { return "arrested"; }
+
+  double next_step_event(const World& world) const override {
+    const double half_step = 0.5 * world.settings().time_step;
+    if (!c_.coarse_grain || next_snapshot_ > c_.end + half_step) return std::numeric_limits<double>::infinity();
+    return next_snapshot_ - half_step;
+  }
 
   void after_step(World& world) override {
     if (!c_.coarse_grain) return;

@@ -2,6 +2,7 @@
 // Pouring: batches of particles inserted at random free places of a region while the run goes
 // on, until a total count is reached.
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -31,6 +32,10 @@ class Pouring {
   // Inserts the batches that are due at the world's time; returns how many were added.
   std::size_t pour_due(World& world);
   bool done() const { return poured_ >= spec_.total; }
+  // Time of the next batch (infinity when done): pour_due adds it once the world has reached it.
+  double next_time() const {
+    return done() ? std::numeric_limits<double>::infinity() : next_time_ < 0 ? spec_.start_time : next_time_;
+  }
   std::size_t poured() const { return poured_; }
   std::size_t total() const { return spec_.total; }
   // Checkpoints (pouring_state.cpp): the random generator, the count poured, the next event.

@@ -3,6 +3,7 @@
 // open the gate, collapse), the chute's coarse graining. The run loop calls every observer at
 // fixed points of the run; observers write their own files into the results folder, atomically.
 #include <filesystem>
+#include <limits>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -17,8 +18,12 @@ class RunObserver {
   virtual std::string name() const = 0;
   // Before the first step; `out` is the results folder.
   virtual void start(World& /*world*/, const std::filesystem::path& /*out*/) {}
-  // After every step: keep it cheap. May move walls or remove particles.
+  // After every step: keep it cheap. May move walls or remove particles. The run loop steps in
+  // batches (World::run) and calls it at the end of each batch only; a batch never runs past
+  // the first step that reaches next_step_event().
   virtual void after_step(World& /*world*/) {}
+  // Time from which after_step has something to do (-infinity: at every step).
+  virtual double next_step_event(const World& /*world*/) const { return std::numeric_limits<double>::infinity(); }
   // At every output step with its diagnostics; returning true ends the run with stop_reason().
   virtual bool output(World& /*world*/, const Diagnostics& /*d*/) { return false; }
   virtual std::string stop_reason() const { return name(); }

@@ -219,14 +219,22 @@ void World::rebuild() {
   ++rebuilds_;
 }
 
-void World::step() {
+void World::run(std::uint64_t steps) {
+  if (steps == 0) return;
   if (!ready_) prepare();
+  // The first step opens with its own half kick; each later one also closes the step before.
+  for (std::uint64_t k = 0; k < steps; ++k) advance(k == 0 ? 1 : 2);
+  ScopedPhase phase(timer_, Phase::integrate);
+  kick(particles_, 0.5 * settings_.time_step, settings_.gravity, integration_cost());
+}
+
+void World::advance(int opening_kicks) {
   const double dt = settings_.time_step;
   {
     ScopedPhase phase(timer_, Phase::integrate);
-    // Also zeroes the owned forces: the kick was their last reader.
-    max_displacement_ =
-        std::sqrt(kick_drift(particles_, 0.5 * dt, dt, settings_.gravity, position_at_build_, integration_cost()));
+    // Also zeroes the owned forces: the kicks were their last readers.
+    max_displacement_ = std::sqrt(kick_drift(particles_, opening_kicks, 0.5 * dt, dt, settings_.gravity,
+                                             position_at_build_, integration_cost()));
   }
   time_ += dt;
   if (needs_rebuild()) {
@@ -235,10 +243,6 @@ void World::step() {
     ghosts_.refresh(particles_);
   }
   compute_forces(dt);
-  {
-    ScopedPhase phase(timer_, Phase::integrate);
-    kick(particles_, 0.5 * dt, settings_.gravity, integration_cost());
-  }
   ++steps_;
 }
 

@@ -91,8 +91,11 @@ class World {
   ContactTable& contacts() { return table_; }
   const ContactTable& contacts() const { return table_; }
 
-  void step();
-  void run(std::uint64_t steps) { for (std::uint64_t k = 0; k < steps; ++k) step(); }
+  // One time step; afterwards the state is complete (velocities at the end of the step).
+  void step() { run(1); }
+  // `steps` time steps, the same as `steps` calls of step(), bit for bit. Between two steps the
+  // closing half kick of one and the opening half kick of the next share one pass over memory.
+  void run(std::uint64_t steps);
 
   double time() const { return time_; }
   void set_time(double t) { time_ = t; }
@@ -134,6 +137,7 @@ class World {
  private:
   void invalidate() { ready_ = false; }
   void prepare();
+  void advance(int opening_kicks);  ///< a step up to its forces, without the closing half kick
   void rebuild();
   bool needs_rebuild() const;
   void compute_forces(double memory_dt);
