@@ -55,12 +55,14 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
   // is the same for any thread count.
   const int threads = worth_parallel(owned) ? omp_get_max_threads() : 1;
   std::vector<std::vector<std::uint32_t>> block_neighbors(threads);
+  std::vector<std::uint32_t> block_reach(threads, 0);
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
     const std::size_t lo = owned * t / nt, hi = owned * (t + 1) / nt;
     auto& out = block_neighbors[t];
+    std::uint32_t reach = 0;
     out.reserve(static_cast<std::size_t>(1.05 * per_row * static_cast<double>(hi - lo)) + 16);
     for (std::size_t i = lo; i < hi; ++i) {
       const CellCoord ci = cell_of[i];
@@ -88,13 +90,18 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
             if (same_slab && !(gi < p.gid[j])) continue;  // same slab: the lower global id lists the pair
             if (fixed_i && p.inv_mass[j] == 0.0) continue;
             const double range = ri + p.radius[j];
-            if (norm2(p.position[j] - xi) < range * range) out.push_back(j);
+            if (norm2(p.position[j] - xi) < range * range) {
+              out.push_back(j);
+              if (j > i && j < owned) reach = std::max(reach, static_cast<std::uint32_t>(j - i));
+            }
           }
         }
       }
       row_[i + 1] = static_cast<std::uint32_t>(out.size());
     }
+    block_reach[t] = reach;
   }
+  forward_reach_ = *std::max_element(block_reach.begin(), block_reach.end());
   // Turn per-block counts into global row offsets; the joined list has its exact size.
   std::size_t total = 0;
   for (const auto& b : block_neighbors) total += b.size();

@@ -83,6 +83,9 @@ class PairList {
   // [chunk[c], chunk[c + 1]): the units of the parallel force pass. They depend on the list
   // only, never on the number of threads.
   const std::vector<std::uint32_t>& slab_chunks() const { return chunk_; }
+  // Largest j - i over the entries (i, j) with j an owned particle after i: a pass over the
+  // rows in order first meets particle i + forward_reach() in row i.
+  std::uint32_t forward_reach() const { return forward_reach_; }
   const std::uint32_t* neighbors() const { return neighbor_.data(); }
   const std::uint32_t* row_offsets() const { return row_.data(); }
   // Per entry, 1 if its memory may be non-zero: the sphere pair loop reads this byte, not the
@@ -103,6 +106,7 @@ class PairList {
   std::vector<std::uint32_t> slab_start_;  ///< first owned particle of each slab
   std::vector<std::uint32_t> chunk_;       ///< first slab of each chunk, then the slab count
   double entries_per_row_ = 0;             ///< of the last build
+  std::uint32_t forward_reach_ = 0;
 };
 
 }  // namespace talus

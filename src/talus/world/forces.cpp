@@ -38,7 +38,8 @@ void World::pair_forces(double memory_dt) {
   const SpherePairArrays arrays{p.position.data(), p.velocity.data(), p.angular_velocity.data(), p.radius.data(),
                                 p.inv_mass.data(), p.species.data(), list.neighbors(), list.row_offsets(),
                                 p.force.data(), p.torque.data(), data(mem.spring), data(mem.normal_prev),
-                                data(mem.rolling), pairs_.remembered()};
+                                data(mem.rolling), pairs_.remembered(), static_cast<std::uint32_t>(p.owned),
+                                list.forward_reach()};
   const bool parallel = worth_parallel(p.owned);
   const std::vector<std::uint32_t>& chunk = list.slab_chunks();
   const long chunks = static_cast<long>(chunk.size()) - 1;
