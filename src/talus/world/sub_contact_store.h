@@ -31,6 +31,11 @@ class SubContactStore {
       out.insert(out.end(), lists[e].begin(), lists[e].end());
     });
   }
+  // The store of `list`, new after a rebuild, from this one: entry e takes the points of old
+  // entry origin[e] - 1, or of old entry -origin[e] - 1 seen from the other body, or none if
+  // origin[e] is 0 (the `origin` of PairList::restore_memory, WallContactList::transfer_memory).
+  template <class List>
+  SubContactStore carried_to(const List& list, const std::vector<std::int64_t>& origin) const;
   // Empty lists laid out on `list`, unless the store already follows its entries and rows.
   template <class List>
   void follow(const List& list) {
@@ -102,6 +107,21 @@ void SubContactStore::assign(const List& list, Append&& append) {
       record(e, first, out.size());
     }
   }
+}
+
+template <class List>
+SubContactStore SubContactStore::carried_to(const List& list, const std::vector<std::int64_t>& origin) const {
+  SubContactStore fresh;
+  fresh.assign(list, [&](std::size_t e, std::vector<SubContact>& out) {
+    const std::int64_t o = origin[e];
+    const std::size_t old = static_cast<std::size_t>(o > 0 ? o - 1 : -o - 1);
+    if (o == 0 || old >= entries()) return;
+    const std::size_t first = out.size();
+    const std::span<const SubContact> points = of(old);
+    out.insert(out.end(), points.begin(), points.end());
+    if (o < 0) reverse_points(std::span<SubContact>(out).subspan(first));
+  });
+  return fresh;
 }
 
 }  // namespace talus

@@ -178,33 +178,13 @@ void World::rebuild() {
   std::vector<std::int64_t> origin;
   pairs_.restore_memory(carried, p.gid, has_composites() ? &origin : nullptr);
   carried = CarriedContacts{};
-  if (has_composites()) {
-    SubContactStore fresh;
-    fresh.assign(pairs_, [&](std::size_t e, std::vector<SubContact>& out) {
-      const std::int64_t o = origin[e];
-      const std::size_t old = static_cast<std::size_t>(o > 0 ? o - 1 : -o - 1);
-      if (o == 0 || old >= pair_sub_.entries()) return;
-      const std::size_t first = out.size();
-      const std::span<const SubContact> points = pair_sub_.of(old);
-      out.insert(out.end(), points.begin(), points.end());
-      if (o < 0) reverse_points(std::span<SubContact>(out).subspan(first));
-    });
-    pair_sub_ = std::move(fresh);
-  }
+  if (has_composites()) pair_sub_ = pair_sub_.carried_to(pairs_, origin);
 
   WallContactList old_walls = std::move(wall_pairs_);
   wall_pairs_ = WallContactList{};
   wall_pairs_.build(p, walls_, time_, skin_, layout);
   wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
-  if (has_composites()) {
-    SubContactStore fresh;
-    fresh.assign(wall_pairs_, [&](std::size_t e, std::vector<SubContact>& out) {
-      if (origin[e] <= 0 || static_cast<std::size_t>(origin[e] - 1) >= wall_sub_.entries()) return;
-      const std::span<const SubContact> points = wall_sub_.of(static_cast<std::size_t>(origin[e] - 1));
-      out.insert(out.end(), points.begin(), points.end());
-    });
-    wall_sub_ = std::move(fresh);
-  }
+  if (has_composites()) wall_sub_ = wall_sub_.carried_to(wall_pairs_, origin);
   gid_at_build_ = p.gid;  // owned and ghost ids of this build, for the next transfer
 
   position_at_build_.assign(p.position.begin(), p.position.begin() + p.owned);
