@@ -112,32 +112,65 @@ double drift(ParticleStore& p, double dt, const std::vector<Vec3>& at_build, std
 }
 
 namespace {
+// `kKicks` half kicks of particle i, then its drift (returning its squared distance from its
+// position at the last build) and its forces zeroed, or, with kDrift false, the kick alone.
+template <int kKicks, bool kDrift>
+[[gnu::always_inline]] inline double kick_drift_one(ParticleStore& p, std::size_t i, double h, double dt,
+                                                    const Vec3& gravity, const Vec3* at_build) {
+  double d2 = 0;
+  const double inv_m = p.inv_mass[i];
+  if (inv_m != 0.0) {
+    const Vec3 inv_i = p.inv_inertia[i];
+    if (plain_sphere(p, i, inv_i)) {
+      const Vec3 v = kick_sphere<kKicks>(p, i, inv_m, inv_i, h, gravity);
+      if constexpr (kDrift) {
+        const Vec3 x = fma(dt, v, p.position[i]);
+        p.position[i] = x;
+        d2 = norm2(x - at_build[i]);
+      }
+    } else {
+      for (int k = 0; k < kKicks; ++k) kick_one(p, i, inv_m, h, gravity);
+      if constexpr (kDrift) d2 = drift_one(p, i, dt, at_build[i]);
+    }
+  }
+  if constexpr (kDrift) {
+    p.force[i] = {};
+    p.torque[i] = {};
+  }
+  return d2;
+}
+
 template <int kKicks>
 double kick_drift_pass(ParticleStore& p, double h, double dt, const Vec3& gravity, const std::vector<Vec3>& at_build,
                        std::size_t cost) {
   const std::size_t n = p.owned;
   double max_d2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel(n * cost))
-  for (std::size_t i = 0; i < n; ++i) {
-    const double inv_m = p.inv_mass[i];
-    if (inv_m != 0.0) {
-      const Vec3 inv_i = p.inv_inertia[i];
-      if (plain_sphere(p, i, inv_i)) {
-        const Vec3 v = kick_sphere<kKicks>(p, i, inv_m, inv_i, h, gravity);
-        const Vec3 x = fma(dt, v, p.position[i]);
-        p.position[i] = x;
-        max_d2 = std::max(max_d2, norm2(x - at_build[i]));
-      } else {
-        for (int k = 0; k < kKicks; ++k) kick_one(p, i, inv_m, h, gravity);
-        max_d2 = std::max(max_d2, drift_one(p, i, dt, at_build[i]));
-      }
-    }
-    p.force[i] = {};
-    p.torque[i] = {};
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    max_d2 = std::max(max_d2, kick_drift_one<kKicks, true>(p, i, h, dt, gravity, at_build.data()));
   return max_d2;
 }
 }  // namespace
+
+double end_step(ParticleStore& p, std::size_t begin, std::size_t end, const StepEnd& e, const std::uint8_t* skip) {
+  double max_d2 = 0;
+  if (e.next_step) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (!skip[i]) max_d2 = std::max(max_d2, kick_drift_one<2, true>(p, i, e.h, e.dt, e.gravity, e.position_at_build));
+  } else {
+    for (std::size_t i = begin; i < end; ++i)
+      if (!skip[i]) kick_drift_one<1, false>(p, i, e.h, e.dt, e.gravity, e.position_at_build);
+  }
+  return max_d2;
+}
+
+double end_step(ParticleStore& p, const std::vector<std::uint32_t>& indices, const StepEnd& e) {
+  double max_d2 = 0;
+  for (const std::uint32_t i : indices)
+    max_d2 = std::max(max_d2, e.next_step ? kick_drift_one<2, true>(p, i, e.h, e.dt, e.gravity, e.position_at_build)
+                                          : kick_drift_one<1, false>(p, i, e.h, e.dt, e.gravity, e.position_at_build));
+  return max_d2;
+}
 
 double kick_drift(ParticleStore& p, int kicks, double h, double dt, const Vec3& gravity,
                   const std::vector<Vec3>& at_build, std::size_t cost) {

@@ -4,6 +4,7 @@
 // anisotropic bodies kick the angular momentum and drift by a splitting of the free rigid body
 // (rigid_rotation.h), so the gyroscopic term lives in the drift.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "talus/body/particles.h"
@@ -27,5 +28,23 @@ double drift(ParticleStore& particles, double dt, const std::vector<Vec3>& posit
 // zero for the next force pass. Returns what drift returns.
 double kick_drift(ParticleStore& particles, int kicks, double h, double dt, const Vec3& gravity,
                   const std::vector<Vec3>& position_at_build, std::size_t cost = 1);
+
+// How a particle's step ends once its force is complete: the closing half kick and, when
+// another step follows, the next one's opening half kick and drift, its force and torque then
+// zeroed (what kick_drift does with two kicks). World::run ends each particle's step as soon as
+// nothing more can add to its force, while its data is still in cache.
+struct StepEnd {
+  bool next_step = false;
+  double h = 0, dt = 0;  ///< s, half step and step
+  Vec3 gravity;
+  const Vec3* position_at_build = nullptr;
+};
+
+// Ends the step of owned particles [begin, end) but those with skip[i] set; returns the largest
+// squared distance of a drifted particle from its position at the last build (0 without drift).
+double end_step(ParticleStore& particles, std::size_t begin, std::size_t end, const StepEnd& how,
+                const std::uint8_t* skip);
+// The same for the listed particles.
+double end_step(ParticleStore& particles, const std::vector<std::uint32_t>& indices, const StepEnd& how);
 
 }  // namespace talus

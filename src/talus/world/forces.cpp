@@ -28,8 +28,20 @@ void World::compute_forces(double memory_dt) {
   with_tangential_model(settings_.tangential_model, [&](auto model) { wall_forces<model.value>(memory_dt); });
 }
 
+double World::compute_forces_ending_step(double memory_dt, const StepEnd& end) {
+  ParticleStore& p = particles_;
+  double max_d2 = 0;
+  with_tangential_model(settings_.tangential_model,
+                        [&](auto model) { max_d2 = pair_forces<model.value>(memory_dt, &end); });
+  ghosts_.fold_forces(p);
+  if (!walls_.empty())
+    with_tangential_model(settings_.tangential_model, [&](auto model) { wall_forces<model.value>(memory_dt); });
+  ScopedPhase phase(timer_, Phase::integrate);
+  return std::max(max_d2, end_step(p, late_, end));
+}
+
 template <TangentialModel Model>
-void World::pair_forces(double memory_dt) {
+double World::pair_forces(double memory_dt, const StepEnd* end) {
   ScopedPhase phase(timer_, Phase::pair_forces);
   ParticleStore& p = particles_;
   const PairList& list = pairs_;
@@ -47,11 +59,33 @@ void World::pair_forces(double memory_dt) {
   // Chunk c writes to its own slabs and the first slab of chunk c + 1 only: even chunks run
   // together, then odd ones. The chunks depend on the list alone, never on the thread count,
   // so every particle receives its contributions in the same order on any team.
+  // With `end`, a slab's particles end their step once its rows and the previous slab's are
+  // done (pairs within a slab point either way, to the next slab only forwards): at once,
+  // except the first slab of an even chunk after the first, which the odd chunk before it
+  // reaches later, and the late particles (ghost owners, wall contacts).
+  std::vector<double> chunk_d2(static_cast<std::size_t>(std::max(chunks, 0L)), 0.0);
+  const std::uint8_t* late = ends_late_.data();
   for (int colour = 0; colour < 2; ++colour) {
 #pragma omp parallel for schedule(static, 1) if (parallel && chunks > 2)
-    for (long c = colour; c < chunks; c += 2)
-      rows(arrays, table_, memory_dt, list.slab_begin(chunk[c]), list.slab_begin(chunk[c + 1]));
+    for (long c = colour; c < chunks; c += 2) {
+      if (!end) {
+        rows(arrays, table_, memory_dt, list.slab_begin(chunk[c]), list.slab_begin(chunk[c + 1]));
+        continue;
+      }
+      for (std::uint32_t s = chunk[c]; s < chunk[c + 1]; ++s) {
+        rows(arrays, table_, memory_dt, list.slab_begin(s), list.slab_begin(s + 1));
+        const bool reached_later = colour == 0 && c > 0 && s == chunk[c];
+        if (!reached_later)
+          chunk_d2[c] = std::max(chunk_d2[c], end_step(p, list.slab_begin(s), list.slab_begin(s + 1), *end, late));
+      }
+    }
   }
+  double max_d2 = 0;
+  if (!end) return max_d2;
+  for (long c = 2; c < chunks; c += 2)
+    max_d2 = std::max(max_d2, end_step(p, list.slab_begin(chunk[c]), list.slab_begin(chunk[c] + 1), *end, late));
+  for (const double d2 : chunk_d2) max_d2 = std::max(max_d2, d2);
+  return max_d2;
 }
 
 template <TangentialModel Model>

@@ -186,6 +186,7 @@ void World::rebuild() {
   wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
   if (has_composites()) wall_sub_ = wall_sub_.carried_to(wall_pairs_, origin);
   gid_at_build_ = p.gid;  // owned and ghost ids of this build, for the next transfer
+  mark_late_step_ends();
 
   position_at_build_.assign(p.position.begin(), p.position.begin() + p.owned);
   wall_origin_at_build_.resize(walls_.size());
@@ -199,16 +200,53 @@ void World::rebuild() {
   ++rebuilds_;
 }
 
+void World::mark_late_step_ends() {
+  const std::size_t owned = particles_.owned;
+  ends_late_.assign(owned, 0);
+  late_.clear();
+  if (has_composites()) return;  // rigid bodies end their steps in a pass of their own
+  for (std::size_t g = 0; g < ghosts_.count(); ++g) ends_late_[ghosts_.owner(g)] = 1;
+  for (std::size_t i = 0; i < std::min(owned, wall_pairs_.rows()); ++i)
+    if (wall_pairs_.row_begin(i) != wall_pairs_.row_end(i)) ends_late_[i] = 1;
+  for (std::size_t i = 0; i < owned; ++i)
+    if (ends_late_[i]) late_.push_back(static_cast<std::uint32_t>(i));
+}
+
 void World::run(std::uint64_t steps) {
   if (steps == 0) return;
   if (!ready_) prepare();
-  // The first step opens with its own half kick; each later one also closes the step before.
-  for (std::uint64_t k = 0; k < steps; ++k) advance(k == 0 ? 1 : 2);
-  ScopedPhase phase(timer_, Phase::integrate);
-  kick(particles_, 0.5 * settings_.time_step, settings_.gravity, integration_cost());
+  const double dt = settings_.time_step;
+  if (has_composites() || !settings_.fused_step_end) {
+    // The first step opens with its own half kick; each later one also closes the step before.
+    for (std::uint64_t k = 0; k < steps; ++k) {
+      open_step(k == 0 ? 1 : 2);
+      compute_forces(dt);
+      ++steps_;
+    }
+    ScopedPhase phase(timer_, Phase::integrate);
+    kick(particles_, 0.5 * dt, settings_.gravity, integration_cost());
+    return;
+  }
+  // Spheres: each particle's step ends (closing kick, and the next step's opening kick and
+  // drift) within the force pass, as soon as its force is complete.
+  open_step(1);
+  for (std::uint64_t k = 0; k < steps; ++k) {
+    StepEnd end;
+    end.next_step = k + 1 < steps;
+    end.h = 0.5 * dt;
+    end.dt = dt;
+    end.gravity = settings_.gravity;
+    end.position_at_build = position_at_build_.data();
+    const double max_d2 = compute_forces_ending_step(dt, end);
+    ++steps_;
+    if (end.next_step) {
+      max_displacement_ = std::sqrt(max_d2);
+      move_to_next_step();
+    }
+  }
 }
 
-void World::advance(int opening_kicks) {
+void World::open_step(int opening_kicks) {
   const double dt = settings_.time_step;
   {
     ScopedPhase phase(timer_, Phase::integrate);
@@ -216,14 +254,16 @@ void World::advance(int opening_kicks) {
     max_displacement_ = std::sqrt(kick_drift(particles_, opening_kicks, 0.5 * dt, dt, settings_.gravity,
                                              position_at_build_, integration_cost()));
   }
-  time_ += dt;
+  move_to_next_step();
+}
+
+void World::move_to_next_step() {
+  time_ += settings_.time_step;
   if (needs_rebuild()) {
     rebuild();  // new ghosts copy the current state, with zero forces
   } else {
     ghosts_.refresh(particles_);
   }
-  compute_forces(dt);
-  ++steps_;
 }
 
 std::vector<std::int32_t> World::index_of_gid() const {
@@ -235,7 +275,8 @@ std::vector<std::int32_t> World::index_of_gid() const {
 std::size_t World::memory_bytes() const {
   const ParticleStore& p = particles_;
   const std::size_t per_particle = 6 * sizeof(Vec3) + sizeof(Quat) + 3 * sizeof(double) + 3 * 4;
-  return p.position.capacity() * per_particle + pairs_.bytes() + position_at_build_.capacity() * sizeof(Vec3);
+  return p.position.capacity() * per_particle + pairs_.bytes() + position_at_build_.capacity() * sizeof(Vec3) +
+         ends_late_.capacity() + late_.capacity() * sizeof(std::uint32_t);
 }
 
 }  // namespace talus

@@ -12,6 +12,7 @@
 #include "talus/collide/pair_list.h"
 #include "talus/contact/contact_law.h"
 #include "talus/contact/contact_table.h"
+#include "talus/integrate/velocity_verlet.h"
 #include "talus/world/block_schedule.h"
 #include "talus/world/domain.h"
 #include "talus/world/periodic_ghosts.h"
@@ -37,6 +38,10 @@ struct WorldSettings {
   // k_n/n and eta_n/n of its manifold of n points; false: one point per part pair, as in
   // Huet et al. 2021, Sec. II B.
   bool contact_manifold = false;
+  // Sphere worlds end each particle's step (closing half kick, next opening kick and drift)
+  // inside the force pass, as soon as its force is complete; false runs them as separate passes
+  // over all particles, the reference the fused form must equal to the bit.
+  bool fused_step_end = true;
 };
 
 struct ParticleInit {
@@ -102,6 +107,7 @@ class World {
   std::uint64_t step_count() const { return steps_; }
   const WorldSettings& settings() const { return settings_; }
   void set_gravity(const Vec3& g) { settings_.gravity = g; }
+  void set_fused_step_end(bool on) { settings_.fused_step_end = on; }
   // Switching the model drops the contact memory the new one does not keep (Huet et al. 2021,
   // Sec. V B compares both on one packing).
   void set_tangential_model(TangentialModel m) { settings_.tangential_model = m; invalidate(); }
@@ -137,11 +143,18 @@ class World {
  private:
   void invalidate() { ready_ = false; }
   void prepare();
-  void advance(int opening_kicks);  ///< a step up to its forces, without the closing half kick
+  void open_step(int opening_kicks);  ///< the kicks and drift that open a step, then move_to_next_step
+  void move_to_next_step();           ///< the clock, and the list rebuilt or the ghosts refreshed
+  // Particles whose force is complete only after the ghost fold and the walls: their steps end
+  // last (compute_forces_ending_step). Set at every rebuild.
+  void mark_late_step_ends();
   void rebuild();
   bool needs_rebuild() const;
   void compute_forces(double memory_dt);
-  template <TangentialModel Model> void pair_forces(double memory_dt);
+  // Sphere worlds: the forces, each particle's step ended (StepEnd) as soon as its force is
+  // complete; returns the largest squared drift from the positions at the last build.
+  double compute_forces_ending_step(double memory_dt, const StepEnd& end);
+  template <TangentialModel Model> double pair_forces(double memory_dt, const StepEnd* end = nullptr);
   template <TangentialModel Model> void wall_forces(double memory_dt);
   template <TangentialModel Model> void composite_pair_forces(double memory_dt);
   template <TangentialModel Model>
@@ -184,6 +197,8 @@ class World {
   WallContactList wall_pairs_;
   PeriodicGhosts ghosts_;
   std::vector<Vec3> position_at_build_;
+  std::vector<std::uint8_t> ends_late_;  ///< per owned particle (mark_late_step_ends)
+  std::vector<std::uint32_t> late_;      ///< the owned particles with ends_late_ set
   std::vector<std::uint32_t> gid_at_build_;
   std::vector<Vec3> wall_origin_at_build_;
   std::vector<char> wall_active_at_build_;
