@@ -57,8 +57,9 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   const long chunks = static_cast<long>(chunk.size()) - 1;
   const auto rows = with_memory_flags<Model>(mem);
   // Chunk c writes to its own slabs and the first slab of chunk c + 1 only: even chunks run
-  // together, then odd ones. The chunks depend on the list alone, never on the thread count,
-  // so every particle receives its contributions in the same order on any team.
+  // together, then odd ones, each taken by whichever thread is free (a core slowed by another
+  // job takes fewer). The chunks depend on the list alone, never on the thread count or the
+  // schedule, so every particle receives its contributions in the same order on any team.
   // With `end`, a slab's particles end their step once its rows and the previous slab's are
   // done (pairs within a slab point either way, to the next slab only forwards): at once,
   // except the first slab of an even chunk after the first, which the odd chunk before it
@@ -66,7 +67,7 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   std::vector<double> chunk_d2(static_cast<std::size_t>(std::max(chunks, 0L)), 0.0);
   const std::uint8_t* late = ends_late_.data();
   for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(static, 1) if (parallel && chunks > 2)
+#pragma omp parallel for schedule(dynamic, 1) if (parallel && chunks > 2)
     for (long c = colour; c < chunks; c += 2) {
       if (!end) {
         rows(arrays, table_, memory_dt, list.slab_begin(chunk[c]), list.slab_begin(chunk[c + 1]));
@@ -82,6 +83,7 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   }
   double max_d2 = 0;
   if (!end) return max_d2;
+#pragma omp parallel for schedule(dynamic, 1) reduction(max : max_d2) if (parallel && chunks > 4)
   for (long c = 2; c < chunks; c += 2)
     max_d2 = std::max(max_d2, end_step(p, list.slab_begin(chunk[c]), list.slab_begin(chunk[c] + 1), *end, late));
   for (const double d2 : chunk_d2) max_d2 = std::max(max_d2, d2);
