@@ -2,6 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+
+#if defined(__AVX2__) && defined(__FMA__)
+#include <immintrin.h>
+#define TALUS_END_STEP_AVX2 1
+#endif
 
 #include "talus/integrate/rigid_rotation.h"
 #include "talus/world/parallel.h"
@@ -152,23 +158,162 @@ double kick_drift_pass(ParticleStore& p, double h, double dt, const Vec3& gravit
 }
 }  // namespace
 
-double end_step(ParticleStore& p, std::size_t begin, std::size_t end, const StepEnd& e, const std::uint8_t* skip) {
-  double max_d2 = 0;
-  if (e.next_step) {
-    for (std::size_t i = begin; i < end; ++i)
-      if (!skip[i]) max_d2 = std::max(max_d2, kick_drift_one<2, true>(p, i, e.h, e.dt, e.gravity, e.position_at_build));
-  } else {
-    for (std::size_t i = begin; i < end; ++i)
-      if (!skip[i]) kick_drift_one<1, false>(p, i, e.h, e.dt, e.gravity, e.position_at_build);
+namespace {
+// A plain sphere's two half kicks and drift (kick_drift_one<2, true>, the same operations) on
+// arrays the compiler knows apart, so that their addresses stay in registers across the stores;
+// returns its squared distance from its position at the last build.
+struct SphereArrays {
+  Vec3* __restrict position;
+  Vec3* __restrict velocity;
+  Vec3* __restrict spin;
+  const Vec3* __restrict force;
+  const Vec3* __restrict torque;
+  const Vec3* __restrict at_build;
+};
+
+[[gnu::always_inline]] inline double kick_kick_drift_sphere(const SphereArrays& a, std::size_t i, double inv_m,
+                                                            double inv_moment, const StepEnd& e) {
+  const Vec3 accel = fma(inv_m, a.force[i], e.gravity);  // F/m + g
+  const double spin_gain = e.h * inv_moment;
+  const Vec3 torque = a.torque[i];
+  Vec3 v = a.velocity[i], w = a.spin[i];
+  v = fma(e.h, accel, v);
+  w = fma(spin_gain, torque, w);
+  v = fma(e.h, accel, v);
+  w = fma(spin_gain, torque, w);
+  a.velocity[i] = v;
+  a.spin[i] = w;
+  const Vec3 x = fma(e.dt, v, a.position[i]);
+  a.position[i] = x;
+  const Vec3 d = x - a.at_build[i];
+  return std::fma(d.z, d.z, std::fma(d.x, d.x, d.y * d.y));
+}
+}  // namespace
+
+#ifdef TALUS_END_STEP_AVX2
+namespace {
+// Four plain spheres i .. i + 3 at once: their Vec3s are twelve consecutive doubles, three
+// vectors whose lanes run x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3, so a per-particle factor
+// is spread over the lanes by a fixed permutation. Each lane does what kick_kick_drift_sphere
+// does to one component, with the same fused operations, so the bits are the same.
+struct Lanes3 {
+  __m256d a, b, c;
+};
+inline Lanes3 spread(__m256d per_particle) {
+  return {_mm256_permute4x64_pd(per_particle, 0x40), _mm256_permute4x64_pd(per_particle, 0xA5),
+          _mm256_permute4x64_pd(per_particle, 0xFE)};
+}
+
+__m256d kick_kick_drift_four(const SphereArrays& a, double* __restrict force, double* __restrict torque,
+                             const double* __restrict inv_mass, const Vec3* __restrict inv_inertia, std::size_t i,
+                             const Lanes3& gravity, const StepEnd& e) {
+  const __m256d h = _mm256_set1_pd(e.h), dt = _mm256_set1_pd(e.dt);
+  const Lanes3 inv_m = spread(_mm256_loadu_pd(inv_mass + i));
+  const __m256d moments =
+      _mm256_setr_pd(inv_inertia[i].x, inv_inertia[i + 1].x, inv_inertia[i + 2].x, inv_inertia[i + 3].x);
+  const Lanes3 gain = spread(_mm256_mul_pd(h, moments));
+  double* f = force + 3 * i;
+  double* t = torque + 3 * i;
+  double* v = &a.velocity[i].x;
+  double* w = &a.spin[i].x;
+  double* x = &a.position[i].x;
+  const double* x0 = &a.at_build[i].x;
+  __m256d d[3];
+  const __m256d m[3] = {inv_m.a, inv_m.b, inv_m.c}, g[3] = {gravity.a, gravity.b, gravity.c};
+  const __m256d s[3] = {gain.a, gain.b, gain.c};
+  for (int k = 0; k < 3; ++k) {
+    const __m256d accel = _mm256_fmadd_pd(m[k], _mm256_loadu_pd(f + 4 * k), g[k]);
+    const __m256d tau = _mm256_loadu_pd(t + 4 * k);
+    __m256d vk = _mm256_loadu_pd(v + 4 * k), wk = _mm256_loadu_pd(w + 4 * k);
+    vk = _mm256_fmadd_pd(h, accel, vk);
+    wk = _mm256_fmadd_pd(s[k], tau, wk);
+    vk = _mm256_fmadd_pd(h, accel, vk);
+    wk = _mm256_fmadd_pd(s[k], tau, wk);
+    _mm256_storeu_pd(v + 4 * k, vk);
+    _mm256_storeu_pd(w + 4 * k, wk);
+    const __m256d xk = _mm256_fmadd_pd(dt, vk, _mm256_loadu_pd(x + 4 * k));
+    _mm256_storeu_pd(x + 4 * k, xk);
+    d[k] = _mm256_sub_pd(xk, _mm256_loadu_pd(x0 + 4 * k));
+    _mm256_storeu_pd(f + 4 * k, _mm256_setzero_pd());
+    _mm256_storeu_pd(t + 4 * k, _mm256_setzero_pd());
   }
+  // The components of the four displacements, particle by particle.
+  const __m256d dx = _mm256_permute4x64_pd(_mm256_blend_pd(_mm256_blend_pd(d[0], d[1], 0x4), d[2], 0x2), 0x6C);
+  const __m256d dy = _mm256_permute4x64_pd(_mm256_blend_pd(_mm256_blend_pd(d[0], d[1], 0x9), d[2], 0x4), 0xB1);
+  const __m256d dz = _mm256_permute4x64_pd(_mm256_blend_pd(_mm256_blend_pd(d[0], d[1], 0x2), d[2], 0x9), 0xC6);
+  return _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dx, dx, _mm256_mul_pd(dy, dy)));
+}
+}  // namespace
+#endif
+
+double end_step(ParticleStore& p, std::size_t begin, std::size_t end, const StepEnd& e, const StepEndKind* kind) {
+  double max_d2 = 0;
+  if (!e.next_step) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (kind[i] != StepEndKind::late) kick_drift_one<1, false>(p, i, e.h, e.dt, e.gravity, e.position_at_build);
+    return max_d2;
+  }
+  const SphereArrays a{p.position.data(), p.velocity.data(), p.angular_velocity.data(),
+                       p.force.data(),    p.torque.data(),   e.position_at_build};
+  const double* __restrict inv_mass = p.inv_mass.data();
+  const Vec3* __restrict inv_inertia = p.inv_inertia.data();
+  Vec3* __restrict force = p.force.data();
+  Vec3* __restrict torque = p.torque.data();
+#ifdef TALUS_END_STEP_AVX2
+  const Vec3& g = e.gravity;
+  const Lanes3 gravity{_mm256_setr_pd(g.x, g.y, g.z, g.x), _mm256_setr_pd(g.y, g.z, g.x, g.y),
+                       _mm256_setr_pd(g.z, g.x, g.y, g.z)};
+  __m256d max4 = _mm256_setzero_pd();
+  const auto four_plain = [&](std::size_t first) {
+    std::uint32_t four;
+    std::memcpy(&four, kind + first, 4);
+    return four == 0;  // StepEndKind::plain_sphere is 0
+  };
+#endif
+  for (std::size_t i = begin; i < end; ++i) {
+#ifdef TALUS_END_STEP_AVX2
+    for (; i + 4 <= end && four_plain(i); i += 4)
+      max4 = _mm256_max_pd(max4, kick_kick_drift_four(a, &force[0].x, &torque[0].x, inv_mass, inv_inertia, i, gravity, e));
+    if (i == end) break;
+#endif
+    if (kind[i] == StepEndKind::late) continue;
+    if (kind[i] == StepEndKind::plain_sphere) {
+      max_d2 = std::max(max_d2, kick_kick_drift_sphere(a, i, inv_mass[i], inv_inertia[i].x, e));
+      force[i] = {};
+      torque[i] = {};
+    } else {
+      max_d2 = std::max(max_d2, kick_drift_one<2, true>(p, i, e.h, e.dt, e.gravity, e.position_at_build));
+    }
+  }
+#ifdef TALUS_END_STEP_AVX2
+  alignas(32) double lanes[4];
+  _mm256_store_pd(lanes, max4);
+  for (const double l : lanes) max_d2 = std::max(max_d2, l);
+#endif
   return max_d2;
 }
 
 double end_step(ParticleStore& p, const std::vector<std::uint32_t>& indices, const StepEnd& e) {
   double max_d2 = 0;
-  for (const std::uint32_t i : indices)
-    max_d2 = std::max(max_d2, e.next_step ? kick_drift_one<2, true>(p, i, e.h, e.dt, e.gravity, e.position_at_build)
-                                          : kick_drift_one<1, false>(p, i, e.h, e.dt, e.gravity, e.position_at_build));
+  if (!e.next_step) {
+    for (const std::uint32_t i : indices) kick_drift_one<1, false>(p, i, e.h, e.dt, e.gravity, e.position_at_build);
+    return max_d2;
+  }
+  const SphereArrays a{p.position.data(), p.velocity.data(), p.angular_velocity.data(),
+                       p.force.data(),    p.torque.data(),   e.position_at_build};
+  Vec3* __restrict force = p.force.data();
+  Vec3* __restrict torque = p.torque.data();
+  for (const std::uint32_t i : indices) {
+    const double inv_m = p.inv_mass[i];
+    const Vec3 inv_i = p.inv_inertia[i];
+    if (inv_m != 0.0 && plain_sphere(p, i, inv_i)) {
+      max_d2 = std::max(max_d2, kick_kick_drift_sphere(a, i, inv_m, inv_i.x, e));
+      force[i] = {};
+      torque[i] = {};
+    } else {
+      max_d2 = std::max(max_d2, kick_drift_one<2, true>(p, i, e.h, e.dt, e.gravity, e.position_at_build));
+    }
+  }
   return max_d2;
 }
 

@@ -40,10 +40,16 @@ struct StepEnd {
   const Vec3* position_at_build = nullptr;
 };
 
-// Ends the step of owned particles [begin, end) but those with skip[i] set; returns the largest
-// squared distance of a drifted particle from its position at the last build (0 without drift).
+// How end_step takes each particle of a range (World keeps one per owned particle).
+enum class StepEndKind : std::uint8_t {
+  plain_sphere = 0,  ///< mobile, shape 0, equal moments: the fast path, four at a time
+  late = 1,          ///< skipped: its force is not complete yet (ended from a list later)
+  other = 2,         ///< fixed particles and rigid bodies: the general path
+};
+// Ends the step of owned particles [begin, end) but the late ones; returns the largest squared
+// distance of a drifted particle from its position at the last build (0 without drift).
 double end_step(ParticleStore& particles, std::size_t begin, std::size_t end, const StepEnd& how,
-                const std::uint8_t* skip);
+                const StepEndKind* kind);
 // The same for the listed particles.
 double end_step(ParticleStore& particles, const std::vector<std::uint32_t>& indices, const StepEnd& how);
 

@@ -65,7 +65,7 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   // except the first slab of an even chunk after the first, which the odd chunk before it
   // reaches later, and the late particles (ghost owners, wall contacts).
   std::vector<double> chunk_d2(static_cast<std::size_t>(std::max(chunks, 0L)), 0.0);
-  const std::uint8_t* late = ends_late_.data();
+  const StepEndKind* kind = step_end_.data();
   for (int colour = 0; colour < 2; ++colour) {
 #pragma omp parallel for schedule(dynamic, 1) if (parallel && chunks > 2)
     for (long c = colour; c < chunks; c += 2) {
@@ -77,7 +77,7 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
         rows(arrays, table_, memory_dt, list.slab_begin(s), list.slab_begin(s + 1));
         const bool reached_later = colour == 0 && c > 0 && s == chunk[c];
         if (!reached_later)
-          chunk_d2[c] = std::max(chunk_d2[c], end_step(p, list.slab_begin(s), list.slab_begin(s + 1), *end, late));
+          chunk_d2[c] = std::max(chunk_d2[c], end_step(p, list.slab_begin(s), list.slab_begin(s + 1), *end, kind));
       }
     }
   }
@@ -85,7 +85,7 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   if (!end) return max_d2;
 #pragma omp parallel for schedule(dynamic, 1) reduction(max : max_d2) if (parallel && chunks > 4)
   for (long c = 2; c < chunks; c += 2)
-    max_d2 = std::max(max_d2, end_step(p, list.slab_begin(chunk[c]), list.slab_begin(chunk[c] + 1), *end, late));
+    max_d2 = std::max(max_d2, end_step(p, list.slab_begin(chunk[c]), list.slab_begin(chunk[c] + 1), *end, kind));
   for (const double d2 : chunk_d2) max_d2 = std::max(max_d2, d2);
   return max_d2;
 }

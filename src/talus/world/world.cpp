@@ -186,7 +186,7 @@ void World::rebuild() {
   wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
   if (has_composites()) wall_sub_ = wall_sub_.carried_to(wall_pairs_, origin);
   gid_at_build_ = p.gid;  // owned and ghost ids of this build, for the next transfer
-  mark_late_step_ends();
+  mark_step_ends();
 
   position_at_build_.assign(p.position.begin(), p.position.begin() + p.owned);
   wall_origin_at_build_.resize(walls_.size());
@@ -200,16 +200,22 @@ void World::rebuild() {
   ++rebuilds_;
 }
 
-void World::mark_late_step_ends() {
-  const std::size_t owned = particles_.owned;
-  ends_late_.assign(owned, 0);
+void World::mark_step_ends() {
+  const ParticleStore& p = particles_;
+  const std::size_t owned = p.owned;
+  step_end_.resize(owned);
   late_.clear();
   if (has_composites()) return;  // rigid bodies end their steps in a pass of their own
-  for (std::size_t g = 0; g < ghosts_.count(); ++g) ends_late_[ghosts_.owner(g)] = 1;
+  for (std::size_t i = 0; i < owned; ++i) {
+    const Vec3& inv_i = p.inv_inertia[i];
+    const bool plain = p.inv_mass[i] != 0.0 && p.shape[i] == 0 && inv_i.x == inv_i.y && inv_i.y == inv_i.z;
+    step_end_[i] = plain ? StepEndKind::plain_sphere : StepEndKind::other;
+  }
+  for (std::size_t g = 0; g < ghosts_.count(); ++g) step_end_[ghosts_.owner(g)] = StepEndKind::late;
   for (std::size_t i = 0; i < std::min(owned, wall_pairs_.rows()); ++i)
-    if (wall_pairs_.row_begin(i) != wall_pairs_.row_end(i)) ends_late_[i] = 1;
+    if (wall_pairs_.row_begin(i) != wall_pairs_.row_end(i)) step_end_[i] = StepEndKind::late;
   for (std::size_t i = 0; i < owned; ++i)
-    if (ends_late_[i]) late_.push_back(static_cast<std::uint32_t>(i));
+    if (step_end_[i] == StepEndKind::late) late_.push_back(static_cast<std::uint32_t>(i));
 }
 
 void World::run(std::uint64_t steps) {
@@ -276,7 +282,7 @@ std::size_t World::memory_bytes() const {
   const ParticleStore& p = particles_;
   const std::size_t per_particle = 6 * sizeof(Vec3) + sizeof(Quat) + 3 * sizeof(double) + 3 * 4;
   return p.position.capacity() * per_particle + pairs_.bytes() + position_at_build_.capacity() * sizeof(Vec3) +
-         ends_late_.capacity() + late_.capacity() * sizeof(std::uint32_t);
+         step_end_.capacity() + late_.capacity() * sizeof(std::uint32_t);
 }
 
 }  // namespace talus

@@ -145,9 +145,9 @@ class World {
   void prepare();
   void open_step(int opening_kicks);  ///< the kicks and drift that open a step, then move_to_next_step
   void move_to_next_step();           ///< the clock, and the list rebuilt or the ghosts refreshed
-  // Particles whose force is complete only after the ghost fold and the walls: their steps end
-  // last (compute_forces_ending_step). Set at every rebuild.
-  void mark_late_step_ends();
+  // How each particle's step ends (compute_forces_ending_step): late for those whose force is
+  // complete only after the ghost fold and the walls. Set at every rebuild.
+  void mark_step_ends();
   void rebuild();
   bool needs_rebuild() const;
   void compute_forces(double memory_dt);
@@ -197,8 +197,8 @@ class World {
   WallContactList wall_pairs_;
   PeriodicGhosts ghosts_;
   std::vector<Vec3> position_at_build_;
-  std::vector<std::uint8_t> ends_late_;  ///< per owned particle (mark_late_step_ends)
-  std::vector<std::uint32_t> late_;      ///< the owned particles with ends_late_ set
+  std::vector<StepEndKind> step_end_;  ///< per owned particle (mark_step_ends)
+  std::vector<std::uint32_t> late_;    ///< the owned particles whose step ends late
   std::vector<std::uint32_t> gid_at_build_;
   std::vector<Vec3> wall_origin_at_build_;
   std::vector<char> wall_active_at_build_;
