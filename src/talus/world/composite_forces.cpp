@@ -11,6 +11,7 @@
 #include <x86intrin.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -399,6 +400,8 @@ void World::composite_pair_forces(double memory_dt) {
 #pragma omp parallel num_threads(threads)
   {
     const int thread = omp_get_thread_num();
+    std::vector<std::uint32_t> awake;  // entries of the block's rows worth a look, in order
+    std::array<std::uint32_t, kRowsPerBlock + 1> awake_start;  // per row of the block, into `awake`
     for (long block = 0; block_schedule_.next(thread, block);) {
       const std::uint64_t block_start = __rdtsc();
       BlockLoads& loads = block_loads_[block];
@@ -408,26 +411,33 @@ void World::composite_pair_forces(double memory_dt) {
       // budgets, the neighbour's placed parts): asking for them all at once lets the cache misses
       // overlap instead of stalling one pair at a time. Last step's contact points are one
       // stream per block (SubContactStore).
-      for (long row = block * kRowsPerBlock; row < last; ++row) {
+      // The awake entries (apart by less than both bodies can have moved since the gap was
+      // measured, or touching) are gathered here, so that the pass below visits only them.
+      const long first_row = block * kRowsPerBlock;
+      awake.clear();
+      for (long row = first_row; row < last; ++row) {
         const auto i = static_cast<std::uint32_t>(row);
+        awake_start[row - first_row] = static_cast<std::uint32_t>(awake.size());
+        const double travel_i = placed_.travel(i);
         for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
           const std::uint32_t j = list.neighbor(e);
-          if (placed_.travel(i) + placed_.travel(j) < budget[e]) continue;
+          if (travel_i + placed_.travel(j) < budget[e]) continue;
+          awake.push_back(e);
           budgets_.prefetch_parts(e);
           if (p.shape[j] != 0)  // the two lines of every part
             prefetch_lines(placed_.parts(j), placed_.part_count(j) * sizeof(PlacedPart));
         }
       }
+      awake_start[last - first_row] = static_cast<std::uint32_t>(awake.size());
       pair_sub_.start_block(block);
       std::vector<SubContact>& points = pair_sub_.next_points(block);
-      for (long row = block * kRowsPerBlock; row < last; ++row) {
+      for (long row = first_row; row < last; ++row) {
         const auto i = static_cast<std::uint32_t>(row);
         Vec3 fi, ti;
-        for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
+        for (std::uint32_t k = awake_start[row - first_row]; k < awake_start[row - first_row + 1]; ++k) {
+          const std::uint32_t e = awake[k];
           const std::uint32_t j = list.neighbor(e);
-          // Apart by more than both bodies can have moved since the gap was measured.
           const double travelled = placed_.travel(i) + placed_.travel(j);
-          if (travelled < budget[e]) continue;
           const Vec3 d = p.position[i] - p.position[j];
           const double reach = p.radius[i] + p.radius[j];
           const double dist2 = norm2(d);
