@@ -56,6 +56,7 @@ class PlacedBodies {
   // The farthest any point of body i can have moved since the travels restarted (m): the sum
   // over steps of |dx| + 2 R sin(theta / 2), the chord of a turn by theta at the bounding radius R.
   double travel(std::size_t i) const { return travel_[i]; }
+  const double* travels() const { return travel_.data(); }
   const BodyFrame& body(std::size_t i) const { return bodies_[i]; }
   const PlacedPart* parts(std::size_t i) const { return parts_.data() + offset_[i]; }
   std::size_t part_count(std::size_t i) const { return offset_[i + 1] - offset_[i]; }
