@@ -209,12 +209,12 @@ void prefetch_lines(const void* data, std::size_t bytes) {
 
 }  // namespace
 
-template <TangentialModel Model>
+template <TangentialModel Model, bool kProfile>
 ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<const SubContact> previous,
                                     std::vector<SubContact>& contacts, double memory_dt, double travelled,
                                     PartBudget* part_budgets, double& gap) {
   gap = 0;
-  const bool profile = composite_stats_enabled();
+  constexpr bool profile = kProfile;  // the counters and clocks of the benchmark's profile, compiled out otherwise
   const std::uint64_t t_start = ticks(profile);
   std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0;
   const ParticleStore& p = particles_;
@@ -401,6 +401,7 @@ void World::composite_pair_forces(double memory_dt) {
   auto range_of = [bodies](std::uint32_t body) { return static_cast<std::size_t>(body) * kLoadRanges / bodies; };
   const int threads = worth_parallel(16 * p.owned) ? omp_get_max_threads() : 1;
   block_schedule_.plan(blocks, threads);
+  const bool profiling = composite_stats_enabled();
 #pragma omp parallel num_threads(threads)
   {
     const int thread = omp_get_thread_num();
@@ -471,8 +472,10 @@ void World::composite_pair_forces(double memory_dt) {
           if (p.shape[i] != 0 || p.shape[j] != 0) {
             double gap = 0;
             const std::size_t first = points.size();
-            r = composite_pair<Model>(i, j, pair_sub_.take(block, e), points, memory_dt, travelled,
-                                      budgets_.parts(e), gap);
+            r = profiling ? composite_pair<Model, true>(i, j, pair_sub_.take(block, e), points, memory_dt,
+                                                        travelled, budgets_.parts(e), gap)
+                          : composite_pair<Model, false>(i, j, pair_sub_.take(block, e), points, memory_dt,
+                                                         travelled, budgets_.parts(e), gap);
             pair_sub_.record(e, first, points.size());
             if (points.size() == first) {
               budget[e] = travelled + gap;
@@ -504,7 +507,9 @@ void World::composite_pair_forces(double memory_dt) {
 }
 
 #define TALUS_INSTANTIATE(M)                                                                                    \
-  template ContactResult World::composite_pair<M>(std::size_t, std::size_t, std::span<const SubContact>,          \
+  template ContactResult World::composite_pair<M, true>(std::size_t, std::size_t, std::span<const SubContact>,    \
+                                                        std::vector<SubContact>&, double, double, PartBudget*, double&); \
+  template ContactResult World::composite_pair<M, false>(std::size_t, std::size_t, std::span<const SubContact>,   \
                                                   std::vector<SubContact>&, double, double, PartBudget*, double&); \
   template ContactResult World::composite_wall<M>(std::size_t, const Wall&, const Vec3&, const Vec3&,             \
                                                   std::span<const SubContact>, std::vector<SubContact>&, double);  \

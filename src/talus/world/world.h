@@ -157,7 +157,7 @@ class World {
   template <TangentialModel Model> double pair_forces(double memory_dt, const StepEnd* end = nullptr);
   template <TangentialModel Model> void wall_forces(double memory_dt);
   template <TangentialModel Model> void composite_pair_forces(double memory_dt);
-  template <TangentialModel Model>
+  template <TangentialModel Model, bool kProfile>
   ContactResult composite_pair(std::size_t i, std::size_t j, std::span<const SubContact> previous,
                                std::vector<SubContact>& contacts, double memory_dt, double travelled,
                                PartBudget* part_budgets, double& gap);
