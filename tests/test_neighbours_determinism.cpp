@@ -93,14 +93,20 @@ void expect_same_state(const World& a, const World& b) {
   }
 }
 
-// World::run fuses the closing half kick of a step with the opening one of the next; the
-// result must be that of single steps, to the bit, with neighbour rebuilds in between.
-TEST(Determinism, ARunOfStepsEqualsSingleSteps) {
+// A small flowing chute: Weinhart et al. 2012 contacts, a flat base, four layers.
+ChuteSetup four_layer_chute() {
   ChuteSetup s;
   s.flow = s.base = weinhart_chute_contact();
   s.base_diameter = 0;
   s.fill_height = 4;
   s.angle_deg = 26;
+  return s;
+}
+
+// World::run fuses the closing half kick of a step with the opening one of the next; the
+// result must be that of single steps, to the bit, with neighbour rebuilds in between.
+TEST(Determinism, ARunOfStepsEqualsSingleSteps) {
+  const ChuteSetup s = four_layer_chute();
   auto fused = build_chute(s), single = build_chute(s);
   fused->run(300);
   for (int k = 0; k < 300; ++k) single->step();
@@ -138,11 +144,7 @@ TEST(Determinism, ARunOfStepsEqualsSingleSteps) {
 // chunks wait for the odd ones), with periodic ghosts, and with a lid the grains are thrown
 // against (their steps end after the wall forces).
 TEST(Determinism, StepsEndedInTheForcePassEqualSeparatePasses) {
-  ChuteSetup s;
-  s.flow = s.base = weinhart_chute_contact();
-  s.base_diameter = 0;
-  s.fill_height = 4;
-  s.angle_deg = 26;
+  const ChuteSetup s = four_layer_chute();
   auto fused = build_chute(s), separate = build_chute(s);
   separate->set_fused_step_end(false);
   for (World* w : {fused.get(), separate.get()}) {

@@ -188,7 +188,22 @@ struct SphereArrays {
   const Vec3 d = x - a.at_build[i];
   return std::fma(d.z, d.z, std::fma(d.x, d.x, d.y * d.y));
 }
+
+// One particle's step end with a next step: the sphere path above for a plain sphere, else the
+// general one; returns its squared drift from the last build.
+[[gnu::always_inline]] inline double end_one(ParticleStore& p, const SphereArrays& a, std::size_t i, bool plain,
+                                             const StepEnd& e) {
+  if (!plain) return kick_drift_one<2, true>(p, i, e.h, e.dt, e.gravity, e.position_at_build);
+  const double d2 = kick_kick_drift_sphere(a, i, p.inv_mass[i], p.inv_inertia[i].x, e);
+  p.force[i] = {};
+  p.torque[i] = {};
+  return d2;
+}
 }  // namespace
+
+bool is_plain_sphere(const ParticleStore& p, std::size_t i) {
+  return p.inv_mass[i] != 0.0 && plain_sphere(p, i, p.inv_inertia[i]);
+}
 
 #ifdef TALUS_END_STEP_AVX2
 namespace {
@@ -276,14 +291,7 @@ double end_step(ParticleStore& p, std::size_t begin, std::size_t end, const Step
       max4 = _mm256_max_pd(max4, kick_kick_drift_four(a, &force[0].x, &torque[0].x, inv_mass, inv_inertia, i, gravity, e));
     if (i == end) break;
 #endif
-    if (kind[i] == StepEndKind::late) continue;
-    if (kind[i] == StepEndKind::plain_sphere) {
-      max_d2 = std::max(max_d2, kick_kick_drift_sphere(a, i, inv_mass[i], inv_inertia[i].x, e));
-      force[i] = {};
-      torque[i] = {};
-    } else {
-      max_d2 = std::max(max_d2, kick_drift_one<2, true>(p, i, e.h, e.dt, e.gravity, e.position_at_build));
-    }
+    if (kind[i] != StepEndKind::late) max_d2 = std::max(max_d2, end_one(p, a, i, kind[i] == StepEndKind::plain_sphere, e));
   }
 #ifdef TALUS_END_STEP_AVX2
   alignas(32) double lanes[4];
@@ -301,19 +309,7 @@ double end_step(ParticleStore& p, const std::vector<std::uint32_t>& indices, con
   }
   const SphereArrays a{p.position.data(), p.velocity.data(), p.angular_velocity.data(),
                        p.force.data(),    p.torque.data(),   e.position_at_build};
-  Vec3* __restrict force = p.force.data();
-  Vec3* __restrict torque = p.torque.data();
-  for (const std::uint32_t i : indices) {
-    const double inv_m = p.inv_mass[i];
-    const Vec3 inv_i = p.inv_inertia[i];
-    if (inv_m != 0.0 && plain_sphere(p, i, inv_i)) {
-      max_d2 = std::max(max_d2, kick_kick_drift_sphere(a, i, inv_m, inv_i.x, e));
-      force[i] = {};
-      torque[i] = {};
-    } else {
-      max_d2 = std::max(max_d2, kick_drift_one<2, true>(p, i, e.h, e.dt, e.gravity, e.position_at_build));
-    }
-  }
+  for (const std::uint32_t i : indices) max_d2 = std::max(max_d2, end_one(p, a, i, is_plain_sphere(p, i), e));
   return max_d2;
 }
 

@@ -40,6 +40,9 @@ struct StepEnd {
   const Vec3* position_at_build = nullptr;
 };
 
+// Mobile, of shape 0 and equal principal moments: a particle the sphere paths integrate.
+bool is_plain_sphere(const ParticleStore& particles, std::size_t i);
+
 // How end_step takes each particle of a range (World keeps one per owned particle).
 enum class StepEndKind : std::uint8_t {
   plain_sphere = 0,  ///< mobile, shape 0, equal moments: the fast path, four at a time

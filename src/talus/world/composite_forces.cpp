@@ -11,16 +11,16 @@
 #include <x86intrin.h>
 
 #include <algorithm>
-#if defined(__AVX2__)
-#include <immintrin.h>
-#define TALUS_COMPOSITE_AVX2 1
-#endif
 #include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <type_traits>
 #include <variant>
+
+#if defined(__AVX2__)
+#define TALUS_COMPOSITE_AVX2 1  // <x86intrin.h> above brings the intrinsics
+#endif
 
 #include "talus/collide/box_box.h"
 #include "talus/collide/convex_contact.h"

@@ -206,11 +206,8 @@ void World::mark_step_ends() {
   step_end_.resize(owned);
   late_.clear();
   if (has_composites()) return;  // rigid bodies end their steps in a pass of their own
-  for (std::size_t i = 0; i < owned; ++i) {
-    const Vec3& inv_i = p.inv_inertia[i];
-    const bool plain = p.inv_mass[i] != 0.0 && p.shape[i] == 0 && inv_i.x == inv_i.y && inv_i.y == inv_i.z;
-    step_end_[i] = plain ? StepEndKind::plain_sphere : StepEndKind::other;
-  }
+  for (std::size_t i = 0; i < owned; ++i)
+    step_end_[i] = is_plain_sphere(p, i) ? StepEndKind::plain_sphere : StepEndKind::other;
   for (std::size_t g = 0; g < ghosts_.count(); ++g) step_end_[ghosts_.owner(g)] = StepEndKind::late;
   for (std::size_t i = 0; i < std::min(owned, wall_pairs_.rows()); ++i)
     if (wall_pairs_.row_begin(i) != wall_pairs_.row_end(i)) step_end_[i] = StepEndKind::late;
