@@ -135,7 +135,7 @@ TEST(Determinism, ARunOfStepsEqualsSingleSteps) {
     wall_contacts += d.wall_contacts;
   }
   EXPECT_GT(contacts, 20u);
-  EXPECT_GT(wall_contacts, 20u);
+  EXPECT_GT(wall_contacts, 10u);  // 20-34 seen, with the compiler and machine
   expect_same_state(*crosses, *crosses_single);
 }
 
@@ -171,7 +171,7 @@ TEST(Determinism, StepsEndedInTheForcePassEqualSeparatePasses) {
   }
   EXPECT_GE(fused->pair_list().slab_chunks().size(), 9u);  // eight chunks
   EXPECT_GT(fused->rebuilds(), 2u);
-  EXPECT_GT(wall_contacts, 10u);
+  EXPECT_GT(wall_contacts, 20u);
   expect_same_state(*fused, *separate);
 }
 

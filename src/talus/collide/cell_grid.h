@@ -28,6 +28,12 @@ class CellGrid {
     return ((static_cast<std::int64_t>(c[s] - first_[s]) * np) + (c[p] - first_[p])) * nq + (c[q] - first_[q]);
   }
   std::int64_t linear_size() const;
+  // How far linear() moves for one cell along `axis`.
+  std::int64_t stride(int axis) const {
+    const int s = slab_axis_, p = (s + 1) % 3, q = (s + 2) % 3;
+    const std::int64_t nq = last_[q] - first_[q] + 1;
+    return axis == q ? 1 : axis == p ? nq : nq * (last_[p] - first_[p] + 1);
+  }
   int first(int axis) const { return first_[axis]; }
   int last(int axis) const { return last_[axis]; }
 

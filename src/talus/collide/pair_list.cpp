@@ -34,10 +34,37 @@ void ContactMemory::copy_from(const ContactMemory& src, std::size_t from, std::s
   if (!rolling.empty() && !src.rolling.empty()) rolling[to] = s * src.rolling[from];
 }
 
+namespace {
+
+// Appends to `dst` from index n every candidate j in [it, end) that row i lists, and returns
+// the new count. Whether j is listed is data: a branch on it would mispredict for about one
+// candidate in three, so every candidate is written and the count advances only for listed
+// ones (dst has room for the whole range). In i's own slab both rows see the pair and the
+// lower global id lists it; fixed particles never pair with fixed ones.
+template <bool kSameSlab, bool kFixedI>
+std::size_t list_candidates(const ParticleStore& p, std::size_t i, const Vec3& xi, double ri, std::uint32_t gi,
+                            const std::uint32_t* it, const std::uint32_t* end, std::uint32_t* dst, std::size_t n) {
+  const double* __restrict radius = p.radius.data();
+  const Vec3* __restrict position = p.position.data();
+  for (; it != end; ++it) {
+    const std::uint32_t j = *it;
+    const double range = ri + radius[j];
+    bool listed = norm2(position[j] - xi) < range * range;
+    if constexpr (kSameSlab) listed &= (j != i) & (gi < p.gid[j]);
+    if constexpr (kFixedI) listed &= p.inv_mass[j] != 0.0;
+    dst[n] = j;
+    n += listed;
+  }
+  return n;
+}
+
+}  // namespace
+
 void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_of, const CellGrid& grid,
                      double skin, const MemoryLayout& layout) {
   const std::size_t owned = p.owned;
   const int s_axis = grid.slab_axis(), p_axis = (s_axis + 1) % 3, q_axis = (s_axis + 2) % 3;  // as CellGrid::linear
+  const std::int64_t s_stride = grid.stride(s_axis), p_stride = grid.stride(p_axis);
   // Room for about as many entries per row as the last build had, so that blocks seldom grow
   // by doubling (a transient the peak memory would see). The old entries go first: whatever
   // must survive has been carried out of the list.
@@ -64,6 +91,8 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
     auto& out = block_neighbors[t];
     std::uint32_t reach = 0;
     out.reserve(static_cast<std::size_t>(1.05 * per_row * static_cast<double>(hi - lo)) + 16);
+    out.resize(out.capacity());
+    std::size_t n = 0;  // entries listed; out is written past n without branching, then cut to n
     for (std::size_t i = lo; i < hi; ++i) {
       const CellCoord ci = cell_of[i];
       const Vec3 xi = p.position[i];
@@ -71,34 +100,38 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
       const bool fixed_i = p.inv_mass[i] == 0.0;
       const std::uint32_t gi = p.gid[i];
       const int si = ci[s_axis];
+      const std::size_t row_begin = n;
       // The slab and the next one (pairs point up the slab axis), and in each the 3 x 3 cells
       // around i; cells along the fastest axis q are consecutive, so the three are one range
       // of items, from begin() of the first to end() of the last.
-      CellCoord c = ci;
+      const int p_lo = std::max(ci[p_axis] - 1, grid.first(p_axis)), p_hi = std::min(ci[p_axis] + 1, grid.last(p_axis));
       const int q_lo = std::max(ci[q_axis] - 1, grid.first(q_axis)), q_hi = std::min(ci[q_axis] + 1, grid.last(q_axis));
-      for (c[s_axis] = si; c[s_axis] <= std::min(si + 1, grid.last(s_axis)); ++c[s_axis]) {
-        const bool same_slab = c[s_axis] == si;
-        for (c[p_axis] = std::max(ci[p_axis] - 1, grid.first(p_axis));
-             c[p_axis] <= std::min(ci[p_axis] + 1, grid.last(p_axis)); ++c[p_axis]) {
-          c[q_axis] = q_lo;
-          const std::uint32_t* it = grid.begin(grid.linear(c));
-          c[q_axis] = q_hi;
-          const std::uint32_t* const run_end = grid.end(grid.linear(c));
-          for (; it != run_end; ++it) {
-            const std::uint32_t j = *it;
-            if (j == i) continue;
-            if (same_slab && !(gi < p.gid[j])) continue;  // same slab: the lower global id lists the pair
-            if (fixed_i && p.inv_mass[j] == 0.0) continue;
-            const double range = ri + p.radius[j];
-            if (norm2(p.position[j] - xi) < range * range) {
-              out.push_back(j);
-              if (j > i && j < owned) reach = std::max(reach, static_cast<std::uint32_t>(j - i));
-            }
-          }
+      CellCoord first = ci;
+      first[p_axis] = p_lo;
+      first[q_axis] = q_lo;
+      const std::int64_t corner = grid.linear(first);
+      const int slabs = std::min(si + 1, grid.last(s_axis)) - si + 1;
+      for (int ds = 0; ds < slabs; ++ds) {
+        for (int dp = 0; dp <= p_hi - p_lo; ++dp) {
+          const std::int64_t run_first = corner + ds * s_stride + dp * p_stride;
+          const std::uint32_t* const it = grid.begin(run_first);
+          const std::uint32_t* const run_end = grid.end(run_first + (q_hi - q_lo));
+          const std::size_t run = static_cast<std::size_t>(run_end - it);
+          if (n + run > out.size()) out.resize(std::max(2 * out.size(), n + run));
+          std::uint32_t* const dst = out.data();
+          if (ds == 0)
+            n = fixed_i ? list_candidates<true, true>(p, i, xi, ri, gi, it, run_end, dst, n)
+                        : list_candidates<true, false>(p, i, xi, ri, gi, it, run_end, dst, n);
+          else
+            n = fixed_i ? list_candidates<false, true>(p, i, xi, ri, gi, it, run_end, dst, n)
+                        : list_candidates<false, false>(p, i, xi, ri, gi, it, run_end, dst, n);
         }
       }
-      row_[i + 1] = static_cast<std::uint32_t>(out.size());
+      for (std::size_t e = row_begin; e < n; ++e)
+        if (out[e] > i && out[e] < owned) reach = std::max(reach, static_cast<std::uint32_t>(out[e] - i));
+      row_[i + 1] = static_cast<std::uint32_t>(n);
     }
+    out.resize(n);
     block_reach[t] = reach;
   }
   forward_reach_ = *std::max_element(block_reach.begin(), block_reach.end());
@@ -162,10 +195,17 @@ CarriedContacts PairList::carry(const std::vector<std::uint32_t>& gid, std::size
   // The byte flags kept by the sphere pair loop say the same as the memories (a zero flag
   // means a zero memory) in a twenty-fourth of the bytes. (Shaped bodies carry every entry.)
   const auto keep = [&](std::uint32_t e) { return every_entry || remembered_[e] != 0; };
-  // Counting sort of the kept entries by the global id of their row.
+  // Counting sort of the kept entries by the global id of their row. Each row has a global id
+  // of its own, so rows count and copy in parallel.
+  const long rows_n = static_cast<long>(rows());
+  const bool parallel = worth_parallel(rows());
   c.start.assign(gid_limit + 1, 0);
-  for (std::size_t i = 0; i < rows(); ++i)
-    for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) c.start[gid[i] + 1] += keep(e);
+#pragma omp parallel for schedule(static) if (parallel)
+  for (long i = 0; i < rows_n; ++i) {
+    std::uint32_t kept = 0;
+    for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) kept += keep(e);
+    c.start[gid[i] + 1] = kept;
+  }
   for (std::size_t a = 0; a < gid_limit; ++a) c.start[a + 1] += c.start[a];
   const std::size_t kept = c.start[gid_limit];
   c.other.resize(kept);
@@ -175,7 +215,8 @@ CarriedContacts PairList::carry(const std::vector<std::uint32_t>& gid, std::size
   layout.normal_prev = !memory.normal_prev.empty();
   layout.rolling = !memory.rolling.empty();
   c.memory.resize(kept, layout);
-  for (std::size_t i = 0; i < rows(); ++i) {
+#pragma omp parallel for schedule(static) if (parallel)
+  for (long i = 0; i < rows_n; ++i) {
     std::uint32_t k = c.start[gid[i]];
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) {
       if (!keep(e)) continue;

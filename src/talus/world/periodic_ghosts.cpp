@@ -39,6 +39,25 @@ void PeriodicGhosts::create(ParticleStore& p, const Domain& domain, const CellGr
     p.push_ghost(owner_[g], shift_[g]);
     p.position.back() = image_position[g];
   }
+  group_by_owner(p.owned);
+}
+
+void PeriodicGhosts::group_by_owner(std::size_t owned) {
+  // A stable counting sort of the ghosts by owner.
+  std::vector<std::uint32_t> first(owned + 1, 0);
+  for (const std::uint32_t o : owner_) ++first[o + 1];
+  fold_owner_.clear();
+  fold_start_.clear();
+  for (std::size_t o = 0; o < owned; ++o) {
+    if (first[o + 1] == 0) continue;
+    fold_owner_.push_back(static_cast<std::uint32_t>(o));
+    fold_start_.push_back(0);
+  }
+  for (std::size_t o = 0; o < owned; ++o) first[o + 1] += first[o];
+  for (std::size_t k = 0; k < fold_owner_.size(); ++k) fold_start_[k] = first[fold_owner_[k]];
+  fold_start_.push_back(static_cast<std::uint32_t>(owner_.size()));
+  fold_ghost_.resize(owner_.size());
+  for (std::size_t g = 0; g < owner_.size(); ++g) fold_ghost_[first[owner_[g]]++] = static_cast<std::uint32_t>(g);
 }
 
 void PeriodicGhosts::update_positions(ParticleStore& p) const {
@@ -77,10 +96,15 @@ void PeriodicGhosts::refresh(ParticleStore& p) const {
 }
 
 void PeriodicGhosts::fold_forces(ParticleStore& p) const {
-  for (std::size_t g = 0; g < owner_.size(); ++g) {
-    const std::size_t k = p.owned + g;
-    p.force[owner_[g]] += p.force[k];
-    p.torque[owner_[g]] += p.torque[k];
+  const long owners = static_cast<long>(fold_owner_.size());
+#pragma omp parallel for schedule(static) if (worth_parallel(fold_owner_.size()))
+  for (long k = 0; k < owners; ++k) {
+    const std::uint32_t o = fold_owner_[k];
+    for (std::uint32_t f = fold_start_[k]; f < fold_start_[k + 1]; ++f) {
+      const std::size_t g = p.owned + fold_ghost_[f];
+      p.force[o] += p.force[g];
+      p.torque[o] += p.torque[g];
+    }
   }
 }
 

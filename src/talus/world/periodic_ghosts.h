@@ -20,13 +20,20 @@ class PeriodicGhosts {
   void update_velocities(ParticleStore& particles) const;  ///< velocities and angular velocities
   // Both updates in one pass, and ghost forces and torques reset for the next force pass.
   void refresh(ParticleStore& particles) const;
-  void fold_forces(ParticleStore& particles) const;        ///< adds ghost forces to owners, in ghost order
+  void fold_forces(ParticleStore& particles) const;        ///< adds ghost forces to owners, each in ghost order
   std::size_t count() const { return owner_.size(); }
   std::uint32_t owner(std::size_t ghost) const { return owner_[ghost]; }
 
  private:
+  void group_by_owner(std::size_t owned);  ///< fills the fold_ arrays from owner_
+
   std::vector<std::uint32_t> owner_;  ///< owned index of each ghost's original
   std::vector<Vec3> shift_;           ///< m, ghost position minus owner position
+  // The ghosts grouped by owner (owners ascending, each one's ghosts in ghost order), so that
+  // owners fold in parallel and each adds its ghosts in the order of a serial fold.
+  std::vector<std::uint32_t> fold_owner_;  ///< distinct owners
+  std::vector<std::uint32_t> fold_start_;  ///< per distinct owner, its first entry in fold_ghost_
+  std::vector<std::uint32_t> fold_ghost_;  ///< ghost numbers
 };
 
 }  // namespace talus
