@@ -10,10 +10,10 @@
 namespace talus::bench {
 
 struct TimingOptions {
-  int threads = 1;
-  std::uint64_t warmup = 200;  ///< steps after loading, untimed: rebuilds the contact memory
-  std::uint64_t steps = 2000;  ///< steps per timed repetition
-  int repetitions = 3;         ///< the fastest repetition is reported (other jobs share the machine)
+  std::vector<int> threads{1, 2};  ///< thread counts, timed in turn within each repetition
+  std::uint64_t warmup = 200;      ///< steps after loading, untimed: rebuilds the contact memory
+  std::uint64_t steps = 2000;      ///< steps per timed repetition and thread count
+  int repetitions = 3;             ///< the fastest repetition is reported (other jobs share the machine)
 };
 
 struct TimingResult {
@@ -30,9 +30,17 @@ struct TimingResult {
   std::size_t pair_entries = 0;    ///< half-list entries at the end
   std::size_t engine_bytes = 0;    ///< World::memory_bytes() at the end
   double mean_speed = 0;           ///< of the flowing particles at the end, sqrt(g d)
-  std::vector<Vec3> position_by_gid;  ///< final positions, for the cross-thread comparison
 };
 
-TimingResult time_chute(const ChuteCase& c, const std::filesystem::path& cache_file, const TimingOptions& o);
+// One result per thread count of `o`. The counts take turns on one world, repetition by
+// repetition: this machine's speed drifts by tens of per cent over a minute, and timing the
+// counts in separate blocks would fold that drift into their ratio. (Results do not depend on
+// the thread count, so the world flows on as if one count ran all the steps.)
+std::vector<TimingResult> time_chute(const ChuteCase& c, const std::filesystem::path& cache_file,
+                                     const TimingOptions& o);
+
+// Whether `steps` steps from the cached state end with the same positions, to the bit, on 1
+// and on 2 threads.
+bool same_on_one_and_two_threads(const ChuteCase& c, const std::filesystem::path& cache_file, std::uint64_t steps);
 
 }  // namespace talus::bench

@@ -6,7 +6,7 @@
 //   talus-bench --micro [--benchmark_filter=...]     Google Benchmark kernels instead
 //
 // Cases: chute4k = 20 x 10, H = 20 (4000 flowing on the rough base), chute32k = 40 x 40, H = 20
-// (32,000 flowing); both at 24 deg, lambda = 1, Weinhart contact, dt = t_c/50, flowed for 10
+// (32,000 flowing); both at 24 deg, lambda = 1, Weinhart contact, dt = t_c/50, flowed for 30
 // time units (--flow-time) once and cached in DIR (default <dir of this executable>/bench-cache/). --quick
 // replaces both by 20 x 10, H = 10 chutes flowed 1 time unit, with small step counts (CI smoke).
 //
@@ -14,7 +14,9 @@
 //  - "particles" are all owned particles, flowing + fixed base: the figure per particle-step
 //    divides by that count, as LAMMPS's does (its 32,000 include the frozen base).
 //  - X_1t, X_2t: microseconds per particle per step on 1 and 2 OpenMP threads, fastest of
-//    --reps repetitions of N steps, after a --warmup (contact memory is not cached).
+//    --reps repetitions of N steps, after a --warmup (contact memory is not cached). In each
+//    repetition 1 and then 2 threads run N steps of the same world, so that both see the same
+//    machine: its speed drifts by tens of per cent over a minute. X_speedup_2t = X_1t / X_2t.
 //  - X_1t_cpu: as X_1t with the process CPU time instead of wall time: what 1 thread costs
 //    when other jobs keep it waiting for a core (compare with loadavg).
 //  - contacts_per_particle = 2 contacts / particles, the mean coordination number.
@@ -29,8 +31,8 @@
 //    process's whole VmHWM, comparable with LAMMPS's resident size.
 //  - loadavg: the 1-minute load average after the timings (2 cores: above ~1 means the
 //    2-thread figures competed with other jobs).
-//  - threads_identical: 1 if the positions after warm-up + timed steps on 1 and on 2 threads
-//    are bitwise identical.
+//  - threads_identical: 1 if the positions after min(N, 200) steps from the cached state on 1
+//    and on 2 threads are bitwise identical.
 //  - cg_*_over_step: coarse graining one snapshot of the chute4k state (Weinhart et al. 2012,
 //    Sect. 3; Gaussian, w = 0.25 d) on a 1D depth grid of 200 points or a 3D grid of 40 x 20 x 40,
 //    divided by the cost of one time step, both on one thread; cg_snapshot_over_step is
@@ -64,7 +66,7 @@ struct Options {
   fs::path cache;
   std::string only;                ///< empty: every case
   std::uint64_t steps4k = 2000, steps32k = 500, warmup = 200;
-  int reps = 3;
+  int reps = 5;
   double flow_time = 0;            ///< sqrt(d/g), age of the cached flowing state; 0: 30 (1 with --quick)
   int gen_threads = 0;             ///< threads for cache generation; 0: omp_get_max_threads()
   std::string probe;               ///< internal: run the memory probe of this case and exit
@@ -226,10 +228,10 @@ void run_case(const ChuteCase& c, const Options& o) {
   t.warmup = o.warmup;
   t.steps = steps_of(o, c);
   t.repetitions = o.reps;
-  t.threads = 1;
-  const TimingResult one = time_chute(c, file, t);
-  t.threads = 2;
-  const TimingResult two = time_chute(c, file, t);
+  t.threads = {1, 2};
+  const std::vector<TimingResult> timed = time_chute(c, file, t);
+  const TimingResult& one = timed[0];
+  const TimingResult& two = timed[1];
 
   const std::string& x = c.name;
   const double n = static_cast<double>(one.particles);
@@ -258,9 +260,7 @@ void run_case(const ChuteCase& c, const Options& o) {
   }
   metric(x + "_2t_share_other", 100 * (two.seconds - accounted) / two.seconds, "%");
   metric(x + "_mean_speed", one.mean_speed, "sqrt(gd)");
-  const bool identical = one.position_by_gid.size() == two.position_by_gid.size() &&
-                         std::memcmp(one.position_by_gid.data(), two.position_by_gid.data(),
-                                     one.position_by_gid.size() * sizeof(Vec3)) == 0;
+  const bool identical = same_on_one_and_two_threads(c, file, std::min<std::uint64_t>(t.steps, 200));
   metric(x + "_threads_identical", identical ? 1 : 0, "bool");
   metric(x + "_loadavg", load_average(), "load");
 }

@@ -140,7 +140,7 @@ TEST(Determinism, ARunOfStepsEqualsSingleSteps) {
 }
 
 // Sphere worlds end each particle's step inside the force pass (World::run). It must give the
-// bits of separate passes: on a chute of eight chunks of slabs (so the first slabs of even
+// bits of separate passes: on a chute of several chunks of slabs (so the first slabs of even
 // chunks wait for the odd ones), with periodic ghosts, and with a lid the grains are thrown
 // against (their steps end after the wall forces).
 TEST(Determinism, StepsEndedInTheForcePassEqualSeparatePasses) {
@@ -169,7 +169,7 @@ TEST(Determinism, StepsEndedInTheForcePassEqualSeparatePasses) {
     separate->run(60);
     wall_contacts += fused->diagnostics().wall_contacts;
   }
-  EXPECT_GE(fused->pair_list().slab_chunks().size(), 9u);  // eight chunks
+  EXPECT_GE(fused->pair_list().slab_chunks().size(), 9u);  // at least eight chunks
   EXPECT_GT(fused->rebuilds(), 2u);
   EXPECT_GT(wall_contacts, 20u);
   expect_same_state(*fused, *separate);
