@@ -78,16 +78,18 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
   for (std::size_t i = 0; i < owned; ++i) ++slab_start_[cell_of[i][s_axis] + 1];
   for (int s = 0; s < slab_count; ++s) slab_start_[s + 1] += slab_start_[s];
 
-  // Each thread lists a contiguous block of rows; blocks are joined in order, so the list
-  // is the same for any thread count.
+  // Contiguous blocks of rows, listed by whichever thread is free and joined in order, so the
+  // list is the same for any thread count. Rows differ in cost (a chute's dense base, its
+  // dilute top): one block per thread left one thread waiting for a quarter of the listing.
   const int threads = worth_parallel(owned) ? omp_get_max_threads() : 1;
-  std::vector<std::vector<std::uint32_t>> block_neighbors(threads);
-  std::vector<std::uint32_t> block_reach(threads, 0);
-#pragma omp parallel num_threads(threads)
-  {
-    const int t = omp_get_thread_num();
-    const int nt = omp_get_num_threads();
-    const std::size_t lo = owned * t / nt, hi = owned * (t + 1) / nt;
+  const std::size_t blocks = threads > 1 ? std::min<std::size_t>(8 * threads, owned / 512 + 1) : 1;
+  std::vector<std::vector<std::uint32_t>> block_neighbors(blocks);
+  std::vector<std::uint32_t> block_reach(blocks, 0);
+  const long block_count = static_cast<long>(blocks);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (long block = 0; block < block_count; ++block) {
+    const auto t = static_cast<std::size_t>(block);
+    const std::size_t lo = owned * t / blocks, hi = owned * (t + 1) / blocks;
     auto& out = block_neighbors[t];
     std::uint32_t reach = 0;
     out.reserve(static_cast<std::size_t>(1.05 * per_row * static_cast<double>(hi - lo)) + 16);
@@ -140,8 +142,8 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
   for (const auto& b : block_neighbors) total += b.size();
   neighbor_.reserve(total);
   std::size_t offset = 0;
-  for (int t = 0; t < threads; ++t) {
-    const std::size_t lo = owned * t / threads, hi = owned * (t + 1) / threads;
+  for (std::size_t t = 0; t < blocks; ++t) {
+    const std::size_t lo = owned * t / blocks, hi = owned * (t + 1) / blocks;
     for (std::size_t i = lo; i < hi; ++i) row_[i + 1] += static_cast<std::uint32_t>(offset);
     offset += block_neighbors[t].size();
     neighbor_.insert(neighbor_.end(), block_neighbors[t].begin(), block_neighbors[t].end());
