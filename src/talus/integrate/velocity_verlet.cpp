@@ -310,7 +310,7 @@ double end_step(ParticleStore& p, const std::vector<std::uint32_t>& indices, con
   const SphereArrays a{p.position.data(), p.velocity.data(), p.angular_velocity.data(),
                        p.force.data(),    p.torque.data(),   e.position_at_build};
   const long n = static_cast<long>(indices.size());
-#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel(indices.size()))
+#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel_ghost_pass(indices.size()))
   for (long k = 0; k < n; ++k) {
     const std::uint32_t i = indices[k];
     max_d2 = std::max(max_d2, end_one(p, a, i, is_plain_sphere(p, i), e));

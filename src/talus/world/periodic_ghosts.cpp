@@ -82,7 +82,7 @@ void PeriodicGhosts::update_velocities(ParticleStore& p) const {
 
 void PeriodicGhosts::refresh(ParticleStore& p) const {
   const long n = static_cast<long>(owner_.size());
-#pragma omp parallel for schedule(static) if (worth_parallel(owner_.size()))
+#pragma omp parallel for schedule(static) if (worth_parallel_ghost_pass(owner_.size()))
   for (long g = 0; g < n; ++g) {
     const std::size_t k = p.owned + g;
     const std::uint32_t o = owner_[g];
@@ -97,7 +97,7 @@ void PeriodicGhosts::refresh(ParticleStore& p) const {
 
 void PeriodicGhosts::fold_forces(ParticleStore& p) const {
   const long owners = static_cast<long>(fold_owner_.size());
-#pragma omp parallel for schedule(static) if (worth_parallel(fold_owner_.size()))
+#pragma omp parallel for schedule(static) if (worth_parallel_ghost_pass(fold_owner_.size()))
   for (long k = 0; k < owners; ++k) {
     const std::uint32_t o = fold_owner_[k];
     for (std::uint32_t f = fold_start_[k]; f < fold_start_[k + 1]; ++f) {
