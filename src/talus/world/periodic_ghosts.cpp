@@ -1,5 +1,7 @@
 #include "talus/world/periodic_ghosts.h"
 
+#include <omp.h>
+
 #include "talus/world/parallel.h"
 
 namespace talus {
@@ -96,14 +98,30 @@ void PeriodicGhosts::refresh(ParticleStore& p) const {
 }
 
 void PeriodicGhosts::fold_forces(ParticleStore& p) const {
+  // Raw pointers: through the vectors, every store would make the compiler reload their data.
+  Vec3* __restrict force = p.force.data();
+  Vec3* __restrict torque = p.torque.data();
+  const Vec3* __restrict ghost_force = force + p.owned;
+  const Vec3* __restrict ghost_torque = torque + p.owned;
+  if (omp_get_max_threads() == 1 || !worth_parallel_ghost_pass(fold_owner_.size())) {
+    // Alone, ghost by ghost: the same sums in the same order, without the grouping's indirection.
+    const std::uint32_t* __restrict owner = owner_.data();
+    for (std::size_t g = 0; g < owner_.size(); ++g) {
+      force[owner[g]] += ghost_force[g];
+      torque[owner[g]] += ghost_torque[g];
+    }
+    return;
+  }
   const long owners = static_cast<long>(fold_owner_.size());
-#pragma omp parallel for schedule(static) if (worth_parallel_ghost_pass(fold_owner_.size()))
+  const std::uint32_t* __restrict grouped_owner = fold_owner_.data();
+  const std::uint32_t* __restrict start = fold_start_.data();
+  const std::uint32_t* __restrict ghost = fold_ghost_.data();
+#pragma omp parallel for schedule(static)
   for (long k = 0; k < owners; ++k) {
-    const std::uint32_t o = fold_owner_[k];
-    for (std::uint32_t f = fold_start_[k]; f < fold_start_[k + 1]; ++f) {
-      const std::size_t g = p.owned + fold_ghost_[f];
-      p.force[o] += p.force[g];
-      p.torque[o] += p.torque[g];
+    const std::uint32_t o = grouped_owner[k];
+    for (std::uint32_t f = start[k]; f < start[k + 1]; ++f) {
+      force[o] += ghost_force[ghost[f]];
+      torque[o] += ghost_torque[ghost[f]];
     }
   }
 }
