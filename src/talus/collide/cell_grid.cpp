@@ -40,6 +40,10 @@ void CellGrid::setup(const Domain& domain, const std::vector<Vec3>& position, st
   slab_axis_ = 0;
   for (int a = 1; a < 3; ++a)
     if (count_[a] > count_[slab_axis_]) slab_axis_ = a;
+  const int s = slab_axis_, p = (s + 1) % 3, q = (s + 2) % 3;
+  stride_[q] = 1;
+  stride_[p] = last_[q] - first_[q] + 1;
+  stride_[s] = stride_[p] * (last_[p] - first_[p] + 1);
 }
 
 CellCoord CellGrid::coord_of(const Vec3& x) const {

@@ -23,17 +23,10 @@ class CellGrid {
   int slab_axis() const { return slab_axis_; }  ///< the axis with the most cells
   // Linear index of a cell with the slab axis slowest, over the extended range [first, last].
   std::int64_t linear(const CellCoord& c) const {
-    const int s = slab_axis_, p = (s + 1) % 3, q = (s + 2) % 3;
-    const std::int64_t np = last_[p] - first_[p] + 1, nq = last_[q] - first_[q] + 1;
-    return ((static_cast<std::int64_t>(c[s] - first_[s]) * np) + (c[p] - first_[p])) * nq + (c[q] - first_[q]);
+    return (c[0] - first_[0]) * stride_[0] + (c[1] - first_[1]) * stride_[1] + (c[2] - first_[2]) * stride_[2];
   }
   std::int64_t linear_size() const;
-  // How far linear() moves for one cell along `axis`.
-  std::int64_t stride(int axis) const {
-    const int s = slab_axis_, p = (s + 1) % 3, q = (s + 2) % 3;
-    const std::int64_t nq = last_[q] - first_[q] + 1;
-    return axis == q ? 1 : axis == p ? nq : nq * (last_[p] - first_[p] + 1);
-  }
+  std::int64_t stride(int axis) const { return stride_[axis]; }  ///< how far linear() moves for one cell along axis
   int first(int axis) const { return first_[axis]; }
   int last(int axis) const { return last_[axis]; }
 
@@ -49,6 +42,7 @@ class CellGrid {
   int count_[3] = {1, 1, 1};
   int first_[3] = {0, 0, 0}, last_[3] = {0, 0, 0};  ///< extended index range (ghost layers included)
   int slab_axis_ = 0;
+  std::int64_t stride_[3] = {1, 1, 1};  ///< linear() steps: 1 along the fastest axis, the slab axis slowest
   std::vector<std::uint32_t> start_;  ///< first item of each cell (32 bits: half the memory)
   std::vector<std::uint32_t> items_;
 };

@@ -88,9 +88,9 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
   const long block_count = static_cast<long>(blocks);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (long block = 0; block < block_count; ++block) {
-    const auto t = static_cast<std::size_t>(block);
-    const std::size_t lo = owned * t / blocks, hi = owned * (t + 1) / blocks;
-    auto& out = block_neighbors[t];
+    const auto b = static_cast<std::size_t>(block);
+    const std::size_t lo = owned * b / blocks, hi = owned * (b + 1) / blocks;
+    auto& out = block_neighbors[b];
     std::uint32_t reach = 0;
     out.reserve(static_cast<std::size_t>(1.05 * per_row * static_cast<double>(hi - lo)) + 16);
     out.resize(out.capacity());
@@ -134,20 +134,20 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
       row_[i + 1] = static_cast<std::uint32_t>(n);
     }
     out.resize(n);
-    block_reach[t] = reach;
+    block_reach[b] = reach;
   }
   forward_reach_ = *std::max_element(block_reach.begin(), block_reach.end());
   // Turn per-block counts into global row offsets; the joined list has its exact size.
   std::size_t total = 0;
-  for (const auto& b : block_neighbors) total += b.size();
+  for (const auto& listed : block_neighbors) total += listed.size();
   neighbor_.reserve(total);
   std::size_t offset = 0;
-  for (std::size_t t = 0; t < blocks; ++t) {
-    const std::size_t lo = owned * t / blocks, hi = owned * (t + 1) / blocks;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t lo = owned * b / blocks, hi = owned * (b + 1) / blocks;
     for (std::size_t i = lo; i < hi; ++i) row_[i + 1] += static_cast<std::uint32_t>(offset);
-    offset += block_neighbors[t].size();
-    neighbor_.insert(neighbor_.end(), block_neighbors[t].begin(), block_neighbors[t].end());
-    std::vector<std::uint32_t>().swap(block_neighbors[t]);
+    offset += block_neighbors[b].size();
+    neighbor_.insert(neighbor_.end(), block_neighbors[b].begin(), block_neighbors[b].end());
+    std::vector<std::uint32_t>().swap(block_neighbors[b]);
   }
   memory.resize(neighbor_.size(), layout);
   remembered_.assign(neighbor_.size(), 0);

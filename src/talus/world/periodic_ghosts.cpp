@@ -48,15 +48,14 @@ void PeriodicGhosts::group_by_owner(std::size_t owned) {
   // A stable counting sort of the ghosts by owner.
   std::vector<std::uint32_t> first(owned + 1, 0);
   for (const std::uint32_t o : owner_) ++first[o + 1];
+  for (std::size_t o = 0; o < owned; ++o) first[o + 1] += first[o];
   fold_owner_.clear();
   fold_start_.clear();
   for (std::size_t o = 0; o < owned; ++o) {
-    if (first[o + 1] == 0) continue;
+    if (first[o + 1] == first[o]) continue;
     fold_owner_.push_back(static_cast<std::uint32_t>(o));
-    fold_start_.push_back(0);
+    fold_start_.push_back(first[o]);
   }
-  for (std::size_t o = 0; o < owned; ++o) first[o + 1] += first[o];
-  for (std::size_t k = 0; k < fold_owner_.size(); ++k) fold_start_[k] = first[fold_owner_[k]];
   fold_start_.push_back(static_cast<std::uint32_t>(owner_.size()));
   fold_ghost_.resize(owner_.size());
   for (std::size_t g = 0; g < owner_.size(); ++g) fold_ghost_[first[owner_[g]]++] = static_cast<std::uint32_t>(g);
