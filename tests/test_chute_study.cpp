@@ -1,6 +1,6 @@
 // A short real chute run through the scenario file and the run loop (Weinhart et al. 2012,
-// Sects. 5-7): a 10 x 5 box, H = 8, theta = 24 deg, lambda = 1, flowed to t = 20 and depth
-// profiles averaged over t in [10, 20] with the paper's Gaussian of width 0.25 every t_c/2
+// Sects. 5-7): a 10 x 5 box, H = 8, theta = 24 deg, lambda = 1, flowed to t = 40 and depth
+// profiles averaged over t in [10, 40] with the paper's Gaussian of width 0.25 every t_c/2
 // (Eq. 43; sampling every 5 t_c instead was measured to raise the momentum residual from 1.4 %
 // to 8.7 %: contact forces change within a collision).
 // What holds exactly is checked tightly (mass, the weight carried by the base); what holds only
@@ -24,7 +24,7 @@ namespace {
 
 constexpr char kChute[] = R"(
 [run]
-end_time = 20.0
+end_time = 40.0
 output_interval = 0.5
 seed = 3
 
@@ -88,7 +88,7 @@ ChuteRun chute_run() {
   }
   // A second observer, restored from the first one's checkpoint state, finishes alike.
   io::ScenarioFile g = io::ScenarioFile::from_string(kChute, "chute_test.toml");
-  auto twin = make_chute_observer(read_chute_study(g, sc.derived["contact_time"].get<double>(), 20.0, 8.0, 1.0, 6 / M_PI));
+  auto twin = make_chute_observer(read_chute_study(g, sc.derived["contact_time"].get<double>(), 40.0, 8.0, 1.0, 6 / M_PI));
   twin->restore(nlohmann::json::parse(sc.observers.front()->state().dump()));
   std::filesystem::create_directories(r.dir / "restored");
   twin->finish(*sc.world, r.dir / "restored", r.restored_summary);
@@ -128,8 +128,10 @@ TEST(ChuteStudy, ShortRunObeysTheBalances) {
     // Sect. 7: sigma_zz matches Eq. 41 within 0.5 %. Normal to the base the flow does not
     // accelerate on average, so this holds in the unsteady start-up as well.
     EXPECT_LT(c["lithostatic_error"].get<double>(), 0.005);
-    // The base carries the whole weight, exactly in the long-time average; over T = 10 it was
-    // measured 0.15 % short, so the paper's 0.5 % applies here too.
+    // The base carries the whole weight, exactly in the long-time average. A window samples a
+    // base force that fluctuates with every collision: over T = 10, seeds 1-6 gave weight errors
+    // of -0.80 % to +0.12 % and lithostatic errors of 0.15-0.84 %; over T = 30, seeds 2-4 gave
+    // at most 0.16 % and 0.20 %, so the paper's 0.5 % applies to this window.
     EXPECT_LT(std::abs(c["weight_error"].get<double>()), 0.005);
   }
   {
@@ -141,15 +143,14 @@ TEST(ChuteStudy, ShortRunObeysTheBalances) {
     const double expected = std::atan(std::tan(theta) - a / std::cos(theta));
     EXPECT_NEAR(std::atan(c["mu_base"].get<double>()), expected, 0.4 * M_PI / 180);
     // Locally mu(z) = tan(theta) only once steady (Sect. 7: 0.4 deg at T = 100, measured 0.18 deg
-    // on a T = 100 run). A T = 10 window is noisy: two realisations differing only in round-off
-    // gave a largest bulk deviation of 0.46 and 1.66 deg, so 2.5 deg bounds it; the local check
-    // at the paper's accuracy needs the longer run.
-    EXPECT_LT(c["max_angle_deviation_deg"].get<double>(), 2.5);
+    // on a T = 100 run). A T = 10 window was noisy (two realisations differing only in
+    // round-off: 0.46 and 1.66 deg); over T = 30 seeds 2-4 gave 0.21-0.29 deg, so 1 deg bounds it.
+    EXPECT_LT(c["max_angle_deviation_deg"].get<double>(), 1.0);
   }
   {
     SCOPED_TRACE("MomentumBalanceResidualIsSmall");
-    // Fig. 5: the residual of Eq. 44 falls like 1/T, to 2 % of rho g at T = 100. Measured here:
-    // 1.4 % of rho g (rms over the depth) at T = 10; 5 % leaves room for other seeds.
+    // Fig. 5: the residual of Eq. 44 falls like 1/T, to 2 % of rho g at T = 100. Measured here
+    // (rms over the depth): 1.4 % of rho g at T = 10, 1.1-1.3 % for seeds 2-4 at T = 30.
     EXPECT_LT(r.summary["chute"]["checks"]["momentum_residual"].get<double>(), 0.05);
   }
   {

@@ -2,6 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+#include <immintrin.h>
+#define TALUS_BATCH_AVX512 1
+#else
+#define TALUS_BATCH_AVX512 0
+#endif
 
 namespace talus {
 
@@ -18,6 +26,73 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
   alignas(64) double dx[N], dy[N], dz[N], dist2[N], ri[N], rj[N];
   alignas(64) double vx[N], vy[N], vz[N], wix[N], wiy[N], wiz[N], wjx[N], wjy[N], wjz[N];
   alignas(64) double sx[N], sy[N], sz[N], kn[N], eta_n[N], kt[N], eta_t[N], mu[N];
+#if TALUS_BATCH_AVX512
+  // Eight lanes per gather, stored whole; lanes past the count repeat the last contact, as in
+  // the scalar loop below.
+  const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  const __m256i last = _mm256_set1_epi32(static_cast<int>(n - 1));
+  const auto lane_indices = [&](const std::uint32_t* from, std::uint32_t k) {
+    const __mmask8 live = _mm256_cmple_epu32_mask(_mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(k)), iota), last);
+    return _mm256_mask_loadu_epi32(_mm256_set1_epi32(static_cast<int>(from[n - 1])), live, from + k);
+  };
+  const auto triple = [](__m256i v) { return _mm256_add_epi32(_mm256_slli_epi32(v, 1), v); };  // a Vec3 is three doubles
+  const auto gather = [](const double* base, __m256i index) {
+    return _mm512_mask_i32gather_pd(_mm512_setzero_pd(), __mmask8(0xFF), index, base, 8);
+  };
+  const double* params = &table.pair(0, 0).normal_stiffness;
+  constexpr int kParamDoubles = sizeof(ContactParams) / sizeof(double);
+  static_assert(sizeof(ContactParams) % sizeof(double) == 0);
+  const auto field = [&](std::size_t offset) { return params + offset / sizeof(double); };
+  for (std::uint32_t k = 0; k < lanes; k += 8) {
+    const __m256i i8 = lane_indices(b.i, k), j8 = lane_indices(b.j, k), e8 = lane_indices(b.entry, k);
+    const __m256i i3 = triple(i8), j3 = triple(j8), e3 = triple(e8);
+    const double* x = &position[0].x;
+    const __m512d d_x = _mm512_sub_pd(gather(x, i3), gather(x, j3));
+    const __m512d d_y = _mm512_sub_pd(gather(x + 1, i3), gather(x + 1, j3));
+    const __m512d d_z = _mm512_sub_pd(gather(x + 2, i3), gather(x + 2, j3));
+    _mm512_store_pd(dx + k, d_x);
+    _mm512_store_pd(dy + k, d_y);
+    _mm512_store_pd(dz + k, d_z);
+    // The squares summed as the AVX-512 distance test sums them (sphere_pair_rows.h).
+    _mm512_store_pd(dist2 + k, _mm512_fmadd_pd(d_z, d_z, _mm512_fmadd_pd(d_y, d_y, _mm512_mul_pd(d_x, d_x))));
+    _mm512_store_pd(ri + k, gather(radius, i8));
+    _mm512_store_pd(rj + k, gather(radius, j8));
+    const double* v = &velocity[0].x;
+    _mm512_store_pd(vx + k, _mm512_sub_pd(gather(v, i3), gather(v, j3)));
+    _mm512_store_pd(vy + k, _mm512_sub_pd(gather(v + 1, i3), gather(v + 1, j3)));
+    _mm512_store_pd(vz + k, _mm512_sub_pd(gather(v + 2, i3), gather(v + 2, j3)));
+    const double* w = &spin[0].x;
+    _mm512_store_pd(wix + k, gather(w, i3));
+    _mm512_store_pd(wiy + k, gather(w + 1, i3));
+    _mm512_store_pd(wiz + k, gather(w + 2, i3));
+    _mm512_store_pd(wjx + k, gather(w, j3));
+    _mm512_store_pd(wjy + k, gather(w + 1, j3));
+    _mm512_store_pd(wjz + k, gather(w + 2, j3));
+    const double* s = &spring[0].x;
+    _mm512_store_pd(sx + k, gather(s, e3));
+    _mm512_store_pd(sy + k, gather(s + 1, e3));
+    _mm512_store_pd(sz + k, gather(s + 2, e3));
+    const __m256i species_i = _mm256_i32gather_epi32(species, i8, 4), species_j = _mm256_i32gather_epi32(species, j8, 4);
+    const __m256i pair = _mm256_mullo_epi32(
+        _mm256_add_epi32(_mm256_mullo_epi32(species_i, _mm256_set1_epi32(table.species())), species_j),
+        _mm256_set1_epi32(kParamDoubles));
+    const __m512d reduced_mass = _mm512_div_pd(_mm512_set1_pd(1.0), _mm512_add_pd(gather(inv_mass, i8), gather(inv_mass, j8)));
+    const __m512d sqrt_mass = _mm512_maskz_sqrt_pd(__mmask8(0xFF), reduced_mass);
+    // DampingLaw::at, lane by lane to the bit: the square-root term only where it is set.
+    const auto damping = [&](std::size_t law) {
+      const __m512d eta = _mm512_fmadd_pd(gather(field(law + offsetof(DampingLaw, per_reduced_mass)), pair), reduced_mass,
+                                          gather(field(law + offsetof(DampingLaw, coefficient)), pair));
+      const __m512d per_sqrt = gather(field(law + offsetof(DampingLaw, per_sqrt_reduced_mass)), pair);
+      const __mmask8 has_sqrt = _mm512_cmp_pd_mask(per_sqrt, _mm512_setzero_pd(), _CMP_NEQ_UQ);
+      return _mm512_mask_blend_pd(has_sqrt, eta, _mm512_fmadd_pd(per_sqrt, sqrt_mass, eta));
+    };
+    _mm512_store_pd(kn + k, gather(field(offsetof(ContactParams, normal_stiffness)), pair));
+    _mm512_store_pd(eta_n + k, damping(offsetof(ContactParams, normal_damping)));
+    _mm512_store_pd(kt + k, gather(field(offsetof(ContactParams, tangential_stiffness)), pair));
+    _mm512_store_pd(eta_t + k, damping(offsetof(ContactParams, tangential_damping)));
+    _mm512_store_pd(mu + k, gather(field(offsetof(ContactParams, friction)), pair));
+  }
+#else
   for (std::uint32_t k = 0; k < lanes; ++k) {
     const std::uint32_t c = std::min(k, n - 1);
     const std::uint32_t i = b.i[c], j = b.j[c];
@@ -50,6 +125,7 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
     eta_t[k] = p.tangential_damping.at(reduced_mass);
     mu[k] = p.friction;
   }
+#endif
 #pragma omp simd
   for (std::uint32_t k = 0; k < lanes; ++k) {
     // Geometry: Weinhart et al. 2012, branch vectors after Eq. (8).

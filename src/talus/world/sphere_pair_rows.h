@@ -7,6 +7,13 @@
 // instruction (sphere_elastic_batch.h).
 #include <cstdint>
 
+#if defined(__AVX512F__) && defined(__AVX512VL__) && defined(__AVX512BW__)
+#include <immintrin.h>
+#define TALUS_PAIR_ROWS_AVX512 1
+#else
+#define TALUS_PAIR_ROWS_AVX512 0
+#endif
+
 #include "talus/collide/pair_list.h"
 #include "talus/contact/contact_table.h"
 #include "talus/world/sphere_contact.h"
@@ -84,6 +91,12 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
   const std::uint32_t* __restrict row = a.row;
   const std::uint32_t* __restrict neighbor = a.neighbor;
   std::uint8_t* __restrict remembered = a.remembered;
+  // A contact has ended: a later one starts afresh.
+  const auto forget = [&](std::uint32_t e) {
+    if constexpr (kSpring) a.spring[e] = {};
+    if constexpr (kNormal) a.normal_prev[e] = {};
+    if constexpr (kRolling) a.rolling[e] = {};
+  };
   for (std::uint32_t i = first; i < last; ++i) {
     // Row i is the first to meet particle i + reach, at a random place in the row: its data
     // would arrive as cache misses on the critical path. Asked for now, they are in cache by
@@ -108,6 +121,40 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
     const Vec3 xi = position[i];
     const double ri = radius[i];
     const std::uint32_t row_end = row[i + 1];
+#if TALUS_PAIR_ROWS_AVX512
+    // Eight entries per test: the row's neighbours are gathered, and the touching ones
+    // compressed into the batch (the same pairs, in the same order, as the loop below).
+    const __m512d xi_x = _mm512_set1_pd(xi.x), xi_y = _mm512_set1_pd(xi.y), xi_z = _mm512_set1_pd(xi.z);
+    const __m512d ri8 = _mm512_set1_pd(ri);
+    const __m256i i8 = _mm256_set1_epi32(static_cast<int>(i));
+    const double* const coords = &position[0].x;
+    for (std::uint32_t e = row[i]; e < row_end; e += 8) {
+      if (count > ContactBatch::kSize - 8) flush(count);  // room for eight more
+      const std::uint32_t left = row_end - e;
+      const __mmask8 live = left >= 8 ? __mmask8(0xFF) : static_cast<__mmask8>((1u << left) - 1);
+      const __m256i j8 = _mm256_maskz_loadu_epi32(live, neighbor + e);
+      const __m256i j3 = _mm256_add_epi32(_mm256_slli_epi32(j8, 1), j8);  // a Vec3 is three doubles
+      const __m512d zero = _mm512_setzero_pd();
+      const __m512d dx = _mm512_sub_pd(xi_x, _mm512_mask_i32gather_pd(zero, live, j3, coords, 8));
+      const __m512d dy = _mm512_sub_pd(xi_y, _mm512_mask_i32gather_pd(zero, live, j3, coords + 1, 8));
+      const __m512d dz = _mm512_sub_pd(xi_z, _mm512_mask_i32gather_pd(zero, live, j3, coords + 2, 8));
+      const __m512d reach = _mm512_add_pd(ri8, _mm512_mask_i32gather_pd(zero, live, j8, radius, 8));
+      const __m512d dist2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_mul_pd(dx, dx)));
+      const __mmask8 touches = _mm512_mask_cmp_pd_mask(live, dist2, _mm512_mul_pd(reach, reach), _CMP_LT_OQ);
+      const __m256i e8 = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(e)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(batch.entry + count), _mm256_maskz_compress_epi32(touches, e8));
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(batch.j + count), _mm256_maskz_compress_epi32(touches, j8));
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(batch.i + count), i8);
+      count += static_cast<std::uint32_t>(__builtin_popcount(touches));
+      if constexpr (kSpring || kNormal) {
+        const __m128i was = _mm_maskz_loadu_epi8(live, remembered + e);
+        const auto ended = static_cast<__mmask8>(_mm_test_epi8_mask(was, was) & ~touches);
+        _mm_mask_storeu_epi8(remembered + e, live, _mm_maskz_mov_epi8(touches, _mm_set1_epi8(1)));
+        for (unsigned left_over = ended; left_over; left_over &= left_over - 1) [[unlikely]]
+          forget(e + static_cast<std::uint32_t>(__builtin_ctz(left_over)));
+      }
+    }
+#else
     for (std::uint32_t e = row[i]; e < row_end; ++e) {
       const std::uint32_t j = neighbor[e];
       const Vec3 d = xi - position[j];
@@ -122,14 +169,11 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
         // Apart: a later contact starts afresh. Rare (the contact just ended), so predicted.
         const bool ended = remembered[e] && !touches;
         remembered[e] = touches;
-        if (ended) [[unlikely]] {
-          if constexpr (kSpring) a.spring[e] = {};
-          if constexpr (kNormal) a.normal_prev[e] = {};
-          if constexpr (kRolling) a.rolling[e] = {};
-        }
+        if (ended) [[unlikely]] forget(e);
       }
       if (count == ContactBatch::kSize) flush(count);
     }
+#endif
   }
   if (count) flush(count);
 }
