@@ -22,6 +22,25 @@ void closest_segments(const Vec3& p, const Vec3& u, double hp, const Vec3& q, co
   *cq = q + v * t;
 }
 
+// Edge axis k = 6 + 3 i + j is a_i x b_j; i1, i2 (j1, j2) are the two other axes of A (B) in
+// cyclic order. A table: the divisions and remainders by 3 cost more than the overlap itself.
+struct EdgeAxis {
+  int i, j, i1, i2, j1, j2;
+};
+constexpr EdgeAxis kEdgeAxes[9] = {{0, 0, 1, 2, 1, 2}, {0, 1, 1, 2, 2, 0}, {0, 2, 1, 2, 0, 1},
+                                   {1, 0, 2, 0, 1, 2}, {1, 1, 2, 0, 2, 0}, {1, 2, 2, 0, 0, 1},
+                                   {2, 0, 0, 1, 1, 2}, {2, 1, 0, 1, 2, 0}, {2, 2, 0, 1, 0, 1}};
+constexpr bool edge_table_is_cyclic() {
+  for (int k = 0; k < 9; ++k) {
+    const EdgeAxis& e = kEdgeAxes[k];
+    if (e.i != k / 3 || e.j != k % 3 || e.i1 != (e.i + 1) % 3 || e.i2 != (e.i + 2) % 3 || e.j1 != (e.j + 1) % 3 ||
+        e.j2 != (e.j + 2) % 3)
+      return false;
+  }
+  return true;
+}
+static_assert(edge_table_is_cyclic());
+
 // The 15 candidate axes of two boxes, in A's frame (Gottschalk et al. 1996).
 struct SatAxes {
   const OrientedBox& a;
@@ -52,7 +71,7 @@ struct SatAxes {
       *out = ha[0] * AbsR[0][j] + ha[1] * AbsR[1][j] + ha[2] * AbsR[2][j] + hb[j] - std::abs(tj);
       return true;
     }
-    const int i = (k - 6) / 3, j = (k - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+    const auto [i, j, i1, i2, j1, j2] = kEdgeAxes[k - 6];
     const double len = std::sqrt(R[i1][j] * R[i1][j] + R[i2][j] * R[i2][j]);
     if (!(len > 1e-6)) return false;
     const double ra = ha[i1] * AbsR[i2][j] + ha[i2] * AbsR[i1][j];
@@ -64,7 +83,7 @@ struct SatAxes {
 
   // |a_i x b_j| of edge axis k >= 6, the length its overlap is divided by.
   double edge_length(int k) const {
-    const int i = (k - 6) / 3, j = (k - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    const auto [i, j, i1, i2, j1, j2] = kEdgeAxes[k - 6];
     return std::sqrt(R[i1][j] * R[i1][j] + R[i2][j] * R[i2][j]);
   }
 
@@ -76,7 +95,7 @@ struct SatAxes {
       const double tj = t[0] * R[0][j] + t[1] * R[1][j] + t[2] * R[2][j];
       return tj > 0 ? -b.axis[j] : b.axis[j];
     }
-    const int i = (k - 6) / 3, j = (k - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    const auto [i, j, i1, i2, j1, j2] = kEdgeAxes[k - 6];
     const double tl = t[i2] * R[i1][j] - t[i1] * R[i2][j];
     const Vec3 L = normalized_or_zero(cross(a.axis[i], b.axis[j]));
     return tl > 0 ? -L : L;
@@ -195,7 +214,7 @@ BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose
 
 void box_box_edge_points(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat, PartContact& g) {
   int i = 0, j = 0;
-  if (sat.axis >= 6) i = (sat.axis - 6) / 3, j = (sat.axis - 6) % 3;
+  if (sat.axis >= 6) i = kEdgeAxes[sat.axis - 6].i, j = kEdgeAxes[sat.axis - 6].j;
   Vec3 ea = a.centre, eb = b.centre;
   for (int k = 0; k < 3; ++k) {
     if (k != i || sat.axis < 6) ea += a.axis[k] * (dot(a.axis[k], -g.normal) >= 0 ? a.half[k] : -a.half[k]);
