@@ -123,7 +123,8 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
     const std::uint32_t row_end = row[i + 1];
 #if TALUS_PAIR_ROWS_AVX512
     // Eight entries per test: the row's neighbours are gathered, and the touching ones
-    // compressed into the batch (the same pairs, in the same order, as the loop below).
+    // compressed into the batch, in entry order as in the loop below (the squared distance
+    // is summed with fused operations, so a pair touching to the last bit may differ).
     const __m512d xi_x = _mm512_set1_pd(xi.x), xi_y = _mm512_set1_pd(xi.y), xi_z = _mm512_set1_pd(xi.z);
     const __m512d ri8 = _mm512_set1_pd(ri);
     const __m256i i8 = _mm256_set1_epi32(static_cast<int>(i));
