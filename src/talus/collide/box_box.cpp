@@ -212,19 +212,20 @@ BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose
   return box_box_sat(oriented_box(ha, pa), oriented_box(hb, pb), warm_axis);
 }
 
-void box_box_edge_points(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat, PartContact& g) {
+void box_box_edge_points(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat, Vec3& point_a,
+                         Vec3& point_b) {
   int i = 0, j = 0;
   if (sat.axis >= 6) i = kEdgeAxes[sat.axis - 6].i, j = kEdgeAxes[sat.axis - 6].j;
   Vec3 ea = a.centre, eb = b.centre;
   for (int k = 0; k < 3; ++k) {
-    if (k != i || sat.axis < 6) ea += a.axis[k] * (dot(a.axis[k], -g.normal) >= 0 ? a.half[k] : -a.half[k]);
-    if (k != j || sat.axis < 6) eb += b.axis[k] * (dot(b.axis[k], g.normal) >= 0 ? b.half[k] : -b.half[k]);
+    if (k != i || sat.axis < 6) ea += a.axis[k] * (dot(a.axis[k], -sat.normal) >= 0 ? a.half[k] : -a.half[k]);
+    if (k != j || sat.axis < 6) eb += b.axis[k] * (dot(b.axis[k], sat.normal) >= 0 ? b.half[k] : -b.half[k]);
   }
   if (sat.axis >= 6) {
-    closest_segments(ea, a.axis[i], a.half[i], eb, b.axis[j], b.half[j], &g.point_a, &g.point_b);
+    closest_segments(ea, a.axis[i], a.half[i], eb, b.axis[j], b.half[j], &point_a, &point_b);
   } else {
-    g.point_a = ea;
-    g.point_b = eb;
+    point_a = ea;
+    point_b = eb;
   }
 }
 
@@ -256,7 +257,7 @@ PartContact box_box_contact(const OrientedBox& a, const OrientedBox& b, ContactC
     }
   }
   // Edge pair (or an empty clip from rounding): closest points of the two supporting edges.
-  box_box_edge_points(a, b, sat, g);
+  box_box_edge_points(a, b, sat, g.point_a, g.point_b);
   return finish_contact(g);
 }
 

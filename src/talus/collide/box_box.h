@@ -10,6 +10,8 @@
 //                          deepest clipped manifold points (manifold.h), for an edge pair the
 //                          midpoint of the closest points of the two edges.
 //   box_box_edge_points(): the closest points of the two supporting edges of an edge axis
+#include <cstdint>
+
 #include "talus/collide/convex_contact.h"
 #include "talus/collide/oriented_box.h"
 
@@ -38,8 +40,13 @@ PartContact box_box_contact(const OrientedBox& a, const OrientedBox& b, ContactC
 PartContact box_box_contact(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                             ContactCache* warm = nullptr);
 
-// Deepest points for a non-face axis (or a face clip emptied by rounding): point_a on A,
-// point_b on B, set in g (whose normal is the SAT normal).
-void box_box_edge_points(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat, PartContact& g);
+// Deepest points for a non-face axis (or a face clip emptied by rounding) along sat.normal:
+// point_a on A, point_b on B.
+void box_box_edge_points(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat, Vec3& point_a,
+                         Vec3& point_b);
+
+// The feature id of the single point of an edge-edge contact on SAT axis `axis` (manifold.h):
+// 0xFF in the top byte, the axis in the lowest.
+constexpr std::uint32_t box_box_edge_feature(int axis) { return 0xFFu << 24 | static_cast<std::uint32_t>(axis); }
 
 }  // namespace talus

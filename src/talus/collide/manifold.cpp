@@ -61,10 +61,9 @@ ContactManifold edge_manifold(const OrientedBox& a, const OrientedBox& b, const 
   out.normal = sat.normal;
   out.method = ContactMethod::kBoxBoxSat;
   if (sat.separated || sat.axis < 6) return out;
-  PartContact g;
-  g.normal = sat.normal;
-  box_box_edge_points(a, b, sat, g);
-  out.points[0] = make_point(g.point_a, g.point_b, sat.depth, 0xFFu << 24 | static_cast<unsigned>(sat.axis));
+  Vec3 on_a, on_b;
+  box_box_edge_points(a, b, sat, on_a, on_b);
+  out.points[0] = make_point(on_a, on_b, sat.depth, box_box_edge_feature(sat.axis));
   out.count = 1;
   return out;
 }
