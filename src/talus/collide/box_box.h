@@ -10,8 +10,6 @@
 //                          deepest clipped manifold points (manifold.h), for an edge pair the
 //                          midpoint of the closest points of the two edges.
 //   box_box_edge_points(): the closest points of the two supporting edges of an edge axis
-#include <cstdint>
-
 #include "talus/collide/convex_contact.h"
 #include "talus/collide/oriented_box.h"
 
@@ -44,9 +42,5 @@ PartContact box_box_contact(const Vec3& half_a, const Pose& pose_a, const Vec3& 
 // point_a on A, point_b on B.
 void box_box_edge_points(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat, Vec3& point_a,
                          Vec3& point_b);
-
-// The feature id of the single point of an edge-edge contact on SAT axis `axis` (manifold.h):
-// 0xFF in the top byte, the axis in the lowest.
-constexpr std::uint32_t box_box_edge_feature(int axis) { return 0xFFu << 24 | static_cast<std::uint32_t>(axis); }
 
 }  // namespace talus

@@ -61,9 +61,7 @@ ContactManifold edge_manifold(const OrientedBox& a, const OrientedBox& b, const 
   out.normal = sat.normal;
   out.method = ContactMethod::kBoxBoxSat;
   if (sat.separated || sat.axis < 6) return out;
-  Vec3 on_a, on_b;
-  box_box_edge_points(a, b, sat, on_a, on_b);
-  out.points[0] = make_point(on_a, on_b, sat.depth, box_box_edge_feature(sat.axis));
+  out.points[0] = box_box_edge_point(a, b, sat);
   out.count = 1;
   return out;
 }

@@ -40,6 +40,14 @@ struct ContactManifold {
 };
 
 ContactManifold box_box_manifold(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat);
+// The one point of an edge-edge SAT axis (sat.axis >= 6, not separated), as box_box_manifold
+// gives it: a lasting contact on an edge axis can ask for it without a manifold. Inline, so
+// that a caller that needs only the midpoint builds no more.
+inline ManifoldPoint box_box_edge_point(const OrientedBox& a, const OrientedBox& b, const BoxBoxSat& sat) {
+  Vec3 on_a, on_b;
+  box_box_edge_points(a, b, sat, on_a, on_b);
+  return {sat.depth, (on_a + on_b) * 0.5, on_a, on_b, 0xFFu << 24 | static_cast<std::uint32_t>(sat.axis)};
+}
 ContactManifold box_box_manifold(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                                  const BoxBoxSat& sat);
 // `placed`, when given, is `a` as a placed box (the caller's axes of pose_a): corners clearly

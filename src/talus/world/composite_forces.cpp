@@ -117,9 +117,8 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
         // Edge against edge, most lasting contacts between crosses: the one point of
         // box_box_manifold, made here without the manifold.
         if (!(sat.depth > 0)) return 0;
-        Vec3 on_a, on_b;
-        box_box_edge_points(pa.box, pb.box, sat, on_a, on_b);
-        out[0] = {sat.normal, (on_a + on_b) * 0.5, sat.depth, box_box_edge_feature(sat.axis)};
+        const ManifoldPoint q = box_box_edge_point(pa.box, pb.box, sat);
+        out[0] = {sat.normal, q.point, q.delta_n, q.feature_id};
         return 1;
       }
       return touching_points(box_box_manifold(pa.box, pb.box, sat), out);
