@@ -7,19 +7,41 @@
 namespace talus {
 
 namespace {
-// Gathers into `scratch`, then copies back: the arrays keep their memory (and capacity for the
-// ghosts), and one scratch buffer serves every array instead of a fresh array each, whose
-// pages the system would have to map and zero at every rebuild.
+// A permutation as its cycles (fixed points left out), each listed from its start: index[t + 1]
+// is the old index whose value moves to index[t]. Applying it walks this list once with one
+// saved value per cycle, so the arrays are reordered where they are, without a scratch copy
+// (one would sit on top of everything a rebuild holds at that moment).
+struct Cycles {
+  std::vector<std::uint32_t> index;
+  std::vector<std::uint32_t> end;  ///< one past the last position of each cycle in `index`
+};
+
+Cycles cycles_of(const std::vector<std::uint32_t>& order) {
+  Cycles c;
+  std::vector<char> seen(order.size(), 0);
+  for (std::uint32_t k = 0; k < order.size(); ++k) {
+    if (seen[k] || order[k] == k) continue;
+    std::uint32_t j = k;
+    do {
+      c.index.push_back(j);
+      seen[j] = 1;
+      j = order[j];
+    } while (j != k);
+    c.end.push_back(static_cast<std::uint32_t>(c.index.size()));
+  }
+  return c;
+}
+
 template <class T>
-void permute(std::vector<T>& values, const std::vector<std::uint32_t>& order, unsigned char* scratch) {
-  T* out = reinterpret_cast<T*>(scratch);
-  const long n = static_cast<long>(order.size());
-#pragma omp parallel if (worth_parallel(order.size()))
-  {
-#pragma omp for schedule(static)
-    for (long k = 0; k < n; ++k) out[k] = values[order[k]];
-#pragma omp for schedule(static)
-    for (long k = 0; k < n; ++k) values[k] = out[k];
+void permute(std::vector<T>& values, const Cycles& c) {
+  T* v = values.data();
+  const std::uint32_t* index = c.index.data();
+  std::uint32_t t = 0;
+  for (const std::uint32_t end : c.end) {
+    const T first = v[index[t]];
+    for (; t + 1 < end; ++t) v[index[t]] = v[index[t + 1]];
+    v[index[t]] = first;
+    ++t;
   }
 }
 }  // namespace
@@ -58,38 +80,48 @@ void ParticleStore::reserve(std::size_t n) {
 
 void ParticleStore::permute_owned(const std::vector<std::uint32_t>& order) {
   resize(owned);
-  static_assert(sizeof(Quat) >= sizeof(Vec3), "the scratch holds the largest element");
-  const std::unique_ptr<unsigned char[]> scratch(new unsigned char[order.size() * sizeof(Quat)]);
-  unsigned char* b = scratch.get();
-  permute(position, order, b);
-  permute(velocity, order, b);
-  permute(angular_velocity, order, b);
-  permute(force, order, b);
-  permute(torque, order, b);
-  permute(orientation, order, b);
-  permute(radius, order, b);
-  permute(inv_mass, order, b);
-  permute(inv_inertia, order, b);
-  permute(mass, order, b);
-  permute(species, order, b);
-  permute(shape, order, b);
-  permute(gid, order, b);
+  const Cycles c = cycles_of(order);
+  // The arrays are independent: the threads share them out.
+  const int arrays = 13;
+#pragma omp parallel for schedule(dynamic, 1) if (worth_parallel(order.size()))
+  for (int a = 0; a < arrays; ++a) {
+    switch (a) {
+      case 0: permute(position, c); break;
+      case 1: permute(velocity, c); break;
+      case 2: permute(angular_velocity, c); break;
+      case 3: permute(force, c); break;
+      case 4: permute(torque, c); break;
+      case 5: permute(orientation, c); break;
+      case 6: permute(inv_inertia, c); break;
+      case 7: permute(radius, c); break;
+      case 8: permute(inv_mass, c); break;
+      case 9: permute(mass, c); break;
+      case 10: permute(species, c); break;
+      case 11: permute(shape, c); break;
+      default: permute(gid, c); break;
+    }
+  }
 }
 
-void ParticleStore::push_ghost(std::size_t owner, const Vec3& shift) {
-  position.push_back(position[owner] + shift);
-  velocity.push_back(velocity[owner]);
-  angular_velocity.push_back(angular_velocity[owner]);
-  force.push_back({});
-  torque.push_back({});
-  orientation.push_back(orientation[owner]);
-  radius.push_back(radius[owner]);
-  inv_mass.push_back(inv_mass[owner]);
-  inv_inertia.push_back(inv_inertia[owner]);
-  mass.push_back(mass[owner]);
-  species.push_back(species[owner]);
-  shape.push_back(shape[owner]);
-  gid.push_back(gid[owner]);
+void ParticleStore::append_ghosts(const std::vector<std::uint32_t>& owner, const std::vector<Vec3>& shift) {
+  const std::size_t first = size();
+  resize(first + owner.size());
+  const long n = static_cast<long>(owner.size());
+#pragma omp parallel for schedule(static) if (worth_parallel(owner.size()))
+  for (long g = 0; g < n; ++g) {
+    const std::size_t k = first + g, o = owner[g];
+    position[k] = position[o] + shift[g];
+    velocity[k] = velocity[o];
+    angular_velocity[k] = angular_velocity[o];
+    orientation[k] = orientation[o];
+    radius[k] = radius[o];
+    inv_mass[k] = inv_mass[o];
+    inv_inertia[k] = inv_inertia[o];
+    mass[k] = mass[o];
+    species[k] = species[o];
+    shape[k] = shape[o];
+    gid[k] = gid[o];
+  }
 }
 
 }  // namespace talus

@@ -36,8 +36,8 @@ struct ParticleStore {
   void reserve(std::size_t n);  ///< exact capacity, so that ghosts appended later do not double the arrays
   // Reorders the owned particles so that new index k holds old index order[k]; drops ghosts.
   void permute_owned(const std::vector<std::uint32_t>& order);
-  // Appends a ghost copy of owned particle `owner` shifted by `shift`.
-  void push_ghost(std::size_t owner, const Vec3& shift);
+  // Appends ghost copies of the owned particles owner[g], shifted by shift[g], with zero force.
+  void append_ghosts(const std::vector<std::uint32_t>& owner, const std::vector<Vec3>& shift);
   void drop_ghosts() { resize(owned); }
 };
 

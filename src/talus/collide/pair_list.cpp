@@ -3,15 +3,34 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cstring>
 
 #include "talus/world/parallel.h"
 
 namespace talus {
 
+namespace {
+// Makes room for n values in the memory `values` already holds: on this machine a page the
+// system maps afresh costs about 1.4 us (fault and zeroing), and a rebuild of the
+// 32,000-sphere chute would map some 1,500. An array that must grow frees its old memory
+// first (the two never coexist) and takes 1/32 more, so that the next builds fit.
+template <class T>
+void make_room(std::vector<T>& values, std::size_t n) {
+  if (n <= values.capacity()) return;
+  std::vector<T>().swap(values);
+  values.reserve(n + n / 32);
+}
+
+void zero_in_place(std::vector<Vec3>& values, std::size_t n) {
+  make_room(values, n);
+  values.assign(n, Vec3{});
+}
+}  // namespace
+
 void ContactMemory::resize(std::size_t n, const MemoryLayout& layout) {
-  spring.assign(layout.spring ? n : 0, Vec3{});
-  normal_prev.assign(layout.normal_prev ? n : 0, Vec3{});
-  rolling.assign(layout.rolling ? n : 0, Vec3{});
+  zero_in_place(spring, layout.spring ? n : 0);
+  zero_in_place(normal_prev, layout.normal_prev ? n : 0);
+  zero_in_place(rolling, layout.rolling ? n : 0);
 }
 
 bool ContactMemory::active(std::size_t e) const {
@@ -65,12 +84,17 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
   const std::size_t owned = p.owned;
   const int s_axis = grid.slab_axis(), p_axis = (s_axis + 1) % 3, q_axis = (s_axis + 2) % 3;  // as CellGrid::linear
   const std::int64_t s_stride = grid.stride(s_axis), p_stride = grid.stride(p_axis);
-  // Room for about as many entries per row as the last build had, so that blocks seldom grow
-  // by doubling (a transient the peak memory would see). The old entries go first: whatever
-  // must survive has been carried out of the list.
-  const double per_row = entries_per_row_;
-  release();
-  row_.assign(owned + 1, 0);
+  // The entries are listed into the memory the old ones held (they have been carried out of
+  // the list), each block of rows into its own region. Particles keep nearly their order from
+  // one build to the next (sorted by cell), so the old rows size the regions well; a block
+  // that still outgrows its region goes on in a side array of its own.
+  std::vector<std::uint32_t> old_row;
+  old_row.swap(row_);
+  const auto old_entries = [&](std::size_t lo, std::size_t hi) -> double {
+    const std::size_t rows = old_row.empty() ? 0 : old_row.size() - 1;
+    return static_cast<double>(old_row.empty() ? 0 : old_row[std::min(hi, rows)] - old_row[std::min(lo, rows)]);
+  };
+  clear();
 
   // Slab ranges: owned particles arrive sorted by slab.
   const int slab_count = grid.cells(s_axis);
@@ -83,82 +107,121 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
   // dilute top): one block per thread left one thread waiting for a quarter of the listing.
   const int threads = worth_parallel(owned) ? omp_get_max_threads() : 1;
   const std::size_t blocks = threads > 1 ? std::min<std::size_t>(8 * threads, owned / 512 + 1) : 1;
-  std::vector<std::vector<std::uint32_t>> block_neighbors(blocks);
+  std::vector<std::size_t> region(blocks + 1, 0);  // block b's region: [region[b], region[b + 1])
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t lo = owned * b / blocks, hi = owned * (b + 1) / blocks;
+    region[b + 1] = region[b] + static_cast<std::size_t>(1.05 * old_entries(lo, hi)) + (hi - lo) / 8 + 16;
+  }
+  old_row.swap(row_);  // its memory serves the new rows
+  row_.assign(owned + 1, 0);
+  make_room(neighbor_, region[blocks]);
+  neighbor_.resize(region[blocks]);
+  std::vector<std::vector<std::uint32_t>> overflow(blocks);
+  std::vector<std::size_t> listed(blocks, 0);
   std::vector<std::uint32_t> block_reach(blocks, 0);
   const long block_count = static_cast<long>(blocks);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (long block = 0; block < block_count; ++block) {
-    const auto b = static_cast<std::size_t>(block);
-    const std::size_t lo = owned * b / blocks, hi = owned * (b + 1) / blocks;
-    auto& out = block_neighbors[b];
-    std::uint32_t reach = 0;
-    out.reserve(static_cast<std::size_t>(1.05 * per_row * static_cast<double>(hi - lo)) + 16);
-    out.resize(out.capacity());
-    std::size_t n = 0;  // entries listed; out is written past n without branching, then cut to n
-    for (std::size_t i = lo; i < hi; ++i) {
-      const CellCoord ci = cell_of[i];
-      const Vec3 xi = p.position[i];
-      const double ri = p.radius[i] + skin;
-      const bool fixed_i = p.inv_mass[i] == 0.0;
-      const std::uint32_t gi = p.gid[i];
-      const int si = ci[s_axis];
-      const std::size_t row_begin = n;
-      // The slab and the next one (pairs point up the slab axis), and in each the 3 x 3 cells
-      // around i; cells along the fastest axis q are consecutive, so the three are one range
-      // of items, from begin() of the first to end() of the last.
-      const int p_lo = std::max(ci[p_axis] - 1, grid.first(p_axis)), p_hi = std::min(ci[p_axis] + 1, grid.last(p_axis));
-      const int q_lo = std::max(ci[q_axis] - 1, grid.first(q_axis)), q_hi = std::min(ci[q_axis] + 1, grid.last(q_axis));
-      CellCoord first = ci;
-      first[p_axis] = p_lo;
-      first[q_axis] = q_lo;
-      const std::int64_t corner = grid.linear(first);
-      const int slabs = std::min(si + 1, grid.last(s_axis)) - si + 1;
-      for (int ds = 0; ds < slabs; ++ds) {
-        for (int dp = 0; dp <= p_hi - p_lo; ++dp) {
-          const std::int64_t run_first = corner + ds * s_stride + dp * p_stride;
-          const std::uint32_t* const it = grid.begin(run_first);
-          const std::uint32_t* const run_end = grid.end(run_first + (q_hi - q_lo));
-          const std::size_t run = static_cast<std::size_t>(run_end - it);
-          if (n + run > out.size()) out.resize(std::max(2 * out.size(), n + run));
-          std::uint32_t* const dst = out.data();
-          if (ds == 0)
-            n = fixed_i ? list_candidates<true, true>(p, i, xi, ri, gi, it, run_end, dst, n)
-                        : list_candidates<true, false>(p, i, xi, ri, gi, it, run_end, dst, n);
-          else
-            n = fixed_i ? list_candidates<false, true>(p, i, xi, ri, gi, it, run_end, dst, n)
-                        : list_candidates<false, false>(p, i, xi, ri, gi, it, run_end, dst, n);
+#pragma omp parallel num_threads(threads)
+  {
+    // One row's candidates, written past the listed count without branching, then cut.
+    std::vector<std::uint32_t> row_candidates(256);
+#pragma omp for schedule(dynamic, 1)
+    for (long block = 0; block < block_count; ++block) {
+      const auto b = static_cast<std::size_t>(block);
+      const std::size_t lo = owned * b / blocks, hi = owned * (b + 1) / blocks;
+      std::uint32_t* const in_region = neighbor_.data() + region[b];
+      const std::size_t room = region[b + 1] - region[b];
+      std::vector<std::uint32_t>& spill = overflow[b];
+      std::uint32_t reach = 0;
+      std::size_t n = 0;  // entries listed in this block
+      for (std::size_t i = lo; i < hi; ++i) {
+        const CellCoord ci = cell_of[i];
+        const Vec3 xi = p.position[i];
+        const double ri = p.radius[i] + skin;
+        const bool fixed_i = p.inv_mass[i] == 0.0;
+        const std::uint32_t gi = p.gid[i];
+        const int si = ci[s_axis];
+        std::size_t m = 0;  // this row's entries
+        // The slab and the next one (pairs point up the slab axis), and in each the 3 x 3 cells
+        // around i; cells along the fastest axis q are consecutive, so the three are one range
+        // of items, from begin() of the first to end() of the last.
+        const int p_lo = std::max(ci[p_axis] - 1, grid.first(p_axis)), p_hi = std::min(ci[p_axis] + 1, grid.last(p_axis));
+        const int q_lo = std::max(ci[q_axis] - 1, grid.first(q_axis)), q_hi = std::min(ci[q_axis] + 1, grid.last(q_axis));
+        CellCoord first = ci;
+        first[p_axis] = p_lo;
+        first[q_axis] = q_lo;
+        const std::int64_t corner = grid.linear(first);
+        const int slabs = std::min(si + 1, grid.last(s_axis)) - si + 1;
+        for (int ds = 0; ds < slabs; ++ds) {
+          for (int dp = 0; dp <= p_hi - p_lo; ++dp) {
+            const std::int64_t run_first = corner + ds * s_stride + dp * p_stride;
+            const std::uint32_t* const it = grid.begin(run_first);
+            const std::uint32_t* const run_end = grid.end(run_first + (q_hi - q_lo));
+            const std::size_t run = static_cast<std::size_t>(run_end - it);
+            if (m + run > row_candidates.size()) row_candidates.resize(std::max(2 * row_candidates.size(), m + run));
+            std::uint32_t* const dst = row_candidates.data();
+            if (ds == 0)
+              m = fixed_i ? list_candidates<true, true>(p, i, xi, ri, gi, it, run_end, dst, m)
+                          : list_candidates<true, false>(p, i, xi, ri, gi, it, run_end, dst, m);
+            else
+              m = fixed_i ? list_candidates<false, true>(p, i, xi, ri, gi, it, run_end, dst, m)
+                          : list_candidates<false, false>(p, i, xi, ri, gi, it, run_end, dst, m);
+          }
         }
+        for (std::size_t e = 0; e < m; ++e) {
+          const std::uint32_t j = row_candidates[e];
+          if (j > i && j < owned) reach = std::max(reach, static_cast<std::uint32_t>(j - i));
+          if (n + e < room)
+            in_region[n + e] = j;
+          else
+            spill.push_back(j);
+        }
+        n += m;
+        row_[i + 1] = static_cast<std::uint32_t>(n);
       }
-      for (std::size_t e = row_begin; e < n; ++e)
-        if (out[e] > i && out[e] < owned) reach = std::max(reach, static_cast<std::uint32_t>(out[e] - i));
-      row_[i + 1] = static_cast<std::uint32_t>(n);
+      listed[b] = n;
+      block_reach[b] = reach;
     }
-    out.resize(n);
-    block_reach[b] = reach;
   }
   forward_reach_ = *std::max_element(block_reach.begin(), block_reach.end());
-  // Turn per-block counts into global row offsets; the joined list has its exact size.
+  // Join the blocks in order: row offsets become global, and each block's entries move down to
+  // follow the previous block's (never up past a region not yet moved, while no block spilled).
   std::size_t total = 0;
-  for (const auto& listed : block_neighbors) total += listed.size();
-  neighbor_.reserve(total);
+  bool spilled = false;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    total += listed[b];
+    spilled |= !overflow[b].empty();
+  }
+  std::vector<std::uint32_t> joined;
+  if (spilled) joined.resize(total);  // seldom: the first build, or a list that grew by 5 %
+  std::uint32_t* const out = spilled ? joined.data() : neighbor_.data();
   std::size_t offset = 0;
   for (std::size_t b = 0; b < blocks; ++b) {
     const std::size_t lo = owned * b / blocks, hi = owned * (b + 1) / blocks;
     for (std::size_t i = lo; i < hi; ++i) row_[i + 1] += static_cast<std::uint32_t>(offset);
-    offset += block_neighbors[b].size();
-    neighbor_.insert(neighbor_.end(), block_neighbors[b].begin(), block_neighbors[b].end());
-    std::vector<std::uint32_t>().swap(block_neighbors[b]);
+    const std::size_t kept = listed[b] - overflow[b].size();
+    std::memmove(out + offset, neighbor_.data() + region[b], kept * sizeof(std::uint32_t));
+    std::copy(overflow[b].begin(), overflow[b].end(), out + offset + kept);
+    offset += listed[b];
+  }
+  if (spilled) {
+    std::vector<std::uint32_t>().swap(neighbor_);
+    neighbor_.reserve(total + total / 32);
+    neighbor_.assign(joined.begin(), joined.end());
+  } else {
+    neighbor_.resize(total);
   }
   memory.resize(neighbor_.size(), layout);
+  make_room(remembered_, neighbor_.size());
   remembered_.assign(neighbor_.size(), 0);
-  entries_per_row_ = owned ? static_cast<double>(neighbor_.size()) / static_cast<double>(owned) : 0.0;
   split_slabs();
 }
 
-void PairList::release() {
-  std::vector<std::uint32_t>().swap(neighbor_);
-  std::vector<std::uint8_t>().swap(remembered_);
-  memory = ContactMemory{};
+void PairList::clear() {
+  neighbor_.clear();
+  remembered_.clear();
+  memory.spring.clear();
+  memory.normal_prev.clear();
+  memory.rolling.clear();
 }
 
 void PairList::remark_memories() {
@@ -192,9 +255,8 @@ std::vector<std::int32_t> rows_by_global_id(std::size_t rows, const std::vector<
   return row_of;
 }
 
-CarriedContacts PairList::carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
-                                bool every_entry) const {
-  CarriedContacts c;
+void PairList::carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit, bool every_entry,
+                     CarriedContacts& c) const {
   // The byte flags kept by the sphere pair loop say the same as the memories (a zero flag
   // means a zero memory) in a twenty-fourth of the bytes. (Shaped bodies carry every entry.)
   const auto keep = [&](std::uint32_t e) { return every_entry || remembered_[e] != 0; };
@@ -211,8 +273,12 @@ CarriedContacts PairList::carry(const std::vector<std::uint32_t>& gid, std::size
   }
   for (std::size_t a = 0; a < gid_limit; ++a) c.start[a + 1] += c.start[a];
   const std::size_t kept = c.start[gid_limit];
+  make_room(c.other, kept);
   c.other.resize(kept);
-  c.entry.resize(kept);
+  if (every_entry) {  // the entries of origin (restore_memory), which only shaped bodies ask for
+    make_room(c.entry, kept);
+    c.entry.resize(kept);
+  }
   MemoryLayout layout;
   layout.spring = !memory.spring.empty();
   layout.normal_prev = !memory.normal_prev.empty();
@@ -224,12 +290,11 @@ CarriedContacts PairList::carry(const std::vector<std::uint32_t>& gid, std::size
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) {
       if (!keep(e)) continue;
       c.other[k] = gid[neighbor_[e]];
-      c.entry[k] = e;
+      if (every_entry) c.entry[k] = e;
       c.memory.copy_from(memory, e, k, false);
       ++k;
     }
   }
-  return c;
 }
 
 std::int64_t CarriedContacts::find(std::uint32_t a, std::uint32_t b) const {
@@ -237,6 +302,11 @@ std::int64_t CarriedContacts::find(std::uint32_t a, std::uint32_t b) const {
   for (std::uint32_t k = start[a]; k < start[a + 1]; ++k)
     if (other[k] == b) return k;
   return -1;
+}
+
+std::size_t CarriedContacts::bytes() const {
+  return (start.capacity() + other.capacity() + entry.capacity()) * 4 +
+         (memory.spring.capacity() + memory.normal_prev.capacity() + memory.rolling.capacity()) * sizeof(Vec3);
 }
 
 void PairList::restore_memory(const CarriedContacts& carried, const std::vector<std::uint32_t>& gid,
@@ -265,7 +335,9 @@ void PairList::restore_memory(const CarriedContacts& carried, const std::vector<
 void PairList::transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
                                const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
                                std::vector<std::int64_t>* origin) {
-  restore_memory(old.carry(old_gid, gid_limit, origin != nullptr), gid, origin);
+  CarriedContacts carried;
+  old.carry(old_gid, gid_limit, origin != nullptr, carried);
+  restore_memory(carried, gid, origin);
 }
 
 std::size_t PairList::bytes() const {

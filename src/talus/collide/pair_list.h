@@ -46,6 +46,7 @@ struct CarriedContacts {
   std::vector<std::uint32_t> entry;  ///< the record's entry in the list it came from
   ContactMemory memory;              ///< the record's memory, as seen from a
   std::int64_t find(std::uint32_t a, std::uint32_t b) const;  ///< record of the pair (a, b), or -1
+  std::size_t bytes() const;  ///< memory held
 };
 
 class PairList {
@@ -60,14 +61,14 @@ class PairList {
   void transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
                        const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
                        std::vector<std::int64_t>* origin = nullptr);
-  // The same in two halves, so that the old list can be freed before the new one is built:
-  // `carry` keeps the entries that remember a contact (every entry if `every_entry`), keyed by
-  // the global ids `gid` of this list's particles; `restore_memory` hands them to this list
-  // built anew (`origin` as for transfer_memory).
-  CarriedContacts carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit, bool every_entry) const;
-  // Frees the entries and their memory until the next build (which still sizes its buffers
-  // from their number).
-  void release();
+  // The same in two halves, so that the list can be rebuilt in place: `carry` writes into
+  // `carried` (reusing its buffers) the entries that remember a contact (every entry if
+  // `every_entry`), keyed by the global ids `gid` of this list's particles; `restore_memory`
+  // hands them to this list built anew (`origin` as for transfer_memory).
+  void carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit, bool every_entry,
+             CarriedContacts& carried) const;
+  // Empties the list; its buffers keep their memory for the next build.
+  void clear();
   void restore_memory(const CarriedContacts& carried, const std::vector<std::uint32_t>& gid,
                       std::vector<std::int64_t>* origin = nullptr);
 
@@ -105,7 +106,6 @@ class PairList {
   std::vector<std::uint8_t> remembered_;
   std::vector<std::uint32_t> slab_start_;  ///< first owned particle of each slab
   std::vector<std::uint32_t> chunk_;       ///< first slab of each chunk, then the slab count
-  double entries_per_row_ = 0;             ///< of the last build
   std::uint32_t forward_reach_ = 0;
 };
 

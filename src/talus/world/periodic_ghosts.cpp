@@ -11,7 +11,7 @@ void PeriodicGhosts::create(ParticleStore& p, const Domain& domain, const CellGr
   owner_.clear();
   shift_.clear();
   // First list the images (images of earlier images make the corners), then append them all
-  // at once with exact capacity.
+  // at once.
   std::vector<Vec3> image_position;
   for (int a = 0; a < 3; ++a) {
     if (!domain.periodic[a]) continue;
@@ -36,11 +36,11 @@ void PeriodicGhosts::create(ParticleStore& p, const Domain& domain, const CellGr
       }
     }
   }
-  p.reserve(p.owned + owner_.size());
-  for (std::size_t g = 0; g < owner_.size(); ++g) {
-    p.push_ghost(owner_[g], shift_[g]);
-    p.position.back() = image_position[g];
-  }
+  // Room for an eighth more ghosts than now: growing the particle arrays copies each of them
+  // (a transient the peak memory sees) and maps its pages afresh, so it should be rare.
+  const std::size_t needed = p.owned + owner_.size();
+  if (needed > p.position.capacity()) p.reserve(needed + owner_.size() / 8 + 64);
+  p.append_ghosts(owner_, shift_);
   group_by_owner(p.owned);
 }
 

@@ -138,14 +138,23 @@ void World::rebuild() {
   grid_.setup(domain, p.position, p.owned, range);
 
   // The memories the new list must find, compact (the entries in contact only), so that the
-  // old list is freed before the new one is built: the two never coexist at the peak.
-  CarriedContacts carried = pairs_.carry(gid_at_build_, next_gid_, has_composites());
-  pairs_.release();
+  // new list is built in the old one's memory: the two never coexist at the peak.
+  CarriedContacts& carried = carried_;
+  pairs_.carry(gid_at_build_, next_gid_, has_composites(), carried);
+  pairs_.clear();
 
   // Sort owned particles by cell, slab axis slowest: slabs become contiguous and neighbours
   // close in memory. A stable counting sort; the cells are recomputed after the sort rather
   // than permuted, which needs no second array.
-  std::vector<CellCoord> cell_of(p.owned);
+  // Kept between rebuilds, as are the carried memories: mapping their pages afresh each time
+  // cost more than a tenth of a rebuild (see make_room in pair_list.cpp), and both are alive
+  // at the rebuild's peak anyway.
+  std::vector<CellCoord>& cell_of = cell_of_;
+  if (p.owned + ghosts_.count() > cell_of.capacity()) {  // ghosts append theirs: room for an eighth more
+    std::vector<CellCoord>().swap(cell_of);
+    cell_of.reserve(p.owned + ghosts_.count() + ghosts_.count() / 8 + 64);
+  }
+  cell_of.resize(p.owned);
   {
     std::vector<std::uint32_t> order(p.owned);
 #pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
@@ -166,7 +175,6 @@ void World::rebuild() {
   }
 #pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
   for (long i = 0; i < owned; ++i) cell_of[i] = grid_.coord_of(p.position[i]);
-  cell_of.reserve(p.owned + ghosts_.count() + ghosts_.count() / 8 + 64);  // ghosts append theirs: no doubling
   ghosts_.create(p, domain, grid_, range, cell_of);
   grid_.bin(cell_of);
 
@@ -174,10 +182,8 @@ void World::rebuild() {
   pairs_.build(p, cell_of, grid_, skin_, layout);
   budgets_.clear();  // new entries, and the travels restart
   placed_.restart_travel();
-  std::vector<CellCoord>().swap(cell_of);
   std::vector<std::int64_t> origin;
   pairs_.restore_memory(carried, p.gid, has_composites() ? &origin : nullptr);
-  carried = CarriedContacts{};
   if (has_composites()) pair_sub_ = pair_sub_.carried_to(pairs_, origin);
 
   WallContactList old_walls = std::move(wall_pairs_);
@@ -278,7 +284,8 @@ std::vector<std::int32_t> World::index_of_gid() const {
 std::size_t World::memory_bytes() const {
   const ParticleStore& p = particles_;
   const std::size_t per_particle = 6 * sizeof(Vec3) + sizeof(Quat) + 3 * sizeof(double) + 3 * 4;
-  return p.position.capacity() * per_particle + pairs_.bytes() + position_at_build_.capacity() * sizeof(Vec3) +
+  return p.position.capacity() * per_particle + pairs_.bytes() + carried_.bytes() +
+         cell_of_.capacity() * sizeof(CellCoord) + position_at_build_.capacity() * sizeof(Vec3) +
          step_end_.capacity() + late_.capacity() * sizeof(std::uint32_t);
 }
 

@@ -194,6 +194,8 @@ class World {
   PairBudgets budgets_;
   CellGrid grid_;
   PairList pairs_;
+  CarriedContacts carried_;         ///< rebuild scratch: the memories the new list takes over
+  std::vector<CellCoord> cell_of_;  ///< rebuild scratch: the cell of each particle and ghost
   WallContactList wall_pairs_;
   PeriodicGhosts ghosts_;
   std::vector<Vec3> position_at_build_;
