@@ -2,6 +2,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 
 #include "talus/world/memory_ref.h"
 #include "talus/world/parallel.h"
@@ -56,37 +57,37 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   const std::vector<std::uint32_t>& chunk = list.slab_chunks();
   const long chunks = static_cast<long>(chunk.size()) - 1;
   const auto rows = with_memory_flags<Model>(mem);
-  // Chunk c writes to its own slabs and the first slab of chunk c + 1 only: even chunks run
-  // together, then odd ones, each taken by whichever thread is free (a core slowed by another
-  // job takes fewer). The chunks depend on the list alone, never on the thread count or the
-  // schedule, so every particle receives its contributions in the same order on any team.
+  // Chunk c writes to its own slabs and the first slab of chunk c + 1 only. Even chunks add
+  // their rows first, then odd ones: an odd chunk waits for the even chunks on either side,
+  // never for all of them, and the chunks depend on the list alone, never on the thread count
+  // or the schedule, so every particle receives its contributions in the same order on any
+  // team. Threads take the even chunks in order, then the odd ones, each as it comes free.
   // With `end`, a slab's particles end their step once its rows and the previous slab's are
   // done (pairs within a slab point either way, to the next slab only forwards): at once,
   // except the first slab of an even chunk after the first, which the odd chunk before it
-  // reaches later, and the late particles (ghost owners, wall contacts).
-  std::vector<double> chunk_d2(static_cast<std::size_t>(std::max(chunks, 0L)), 0.0);
+  // ends after writing to it, and the late particles (ghost owners, wall contacts).
   const StepEndKind* kind = step_end_.data();
-  for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(dynamic, 1) if (parallel && chunks > 2)
-    for (long c = colour; c < chunks; c += 2) {
-      if (!end) {
-        rows(arrays, table_, memory_dt, list.slab_begin(chunk[c]), list.slab_begin(chunk[c + 1]));
-        continue;
-      }
-      for (std::uint32_t s = chunk[c]; s < chunk[c + 1]; ++s) {
-        rows(arrays, table_, memory_dt, list.slab_begin(s), list.slab_begin(s + 1));
-        const bool reached_later = colour == 0 && c > 0 && s == chunk[c];
-        if (!reached_later)
-          chunk_d2[c] = std::max(chunk_d2[c], end_step(p, list.slab_begin(s), list.slab_begin(s + 1), *end, kind));
-      }
-    }
-  }
+  const long evens = (chunks + 1) / 2;
+  std::vector<std::atomic<char>> done(static_cast<std::size_t>(std::max(chunks, 0L)));
+  std::atomic<long> next_task{0};
   double max_d2 = 0;
-  if (!end) return max_d2;
-#pragma omp parallel for schedule(dynamic, 1) reduction(max : max_d2) if (parallel && chunks > 4)
-  for (long c = 2; c < chunks; c += 2)
-    max_d2 = std::max(max_d2, end_step(p, list.slab_begin(chunk[c]), list.slab_begin(chunk[c] + 1), *end, kind));
-  for (const double d2 : chunk_d2) max_d2 = std::max(max_d2, d2);
+#pragma omp parallel reduction(max : max_d2) if (parallel && chunks > 2)
+  for (long task = next_task++; task < chunks; task = next_task++) {
+    const long c = task < evens ? 2 * task : 2 * (task - evens) + 1;
+    if (c % 2 == 1) {  // the even chunks on either side first
+      while (!done[c - 1].load(std::memory_order_acquire)) spin_pause();
+      while (c + 1 < chunks && !done[c + 1].load(std::memory_order_acquire)) spin_pause();
+    }
+    for (std::uint32_t s = chunk[c]; s < chunk[c + 1]; ++s) {
+      rows(arrays, table_, memory_dt, list.slab_begin(s), list.slab_begin(s + 1));
+      const bool ended_later = c % 2 == 0 && c > 0 && s == chunk[c];
+      if (end && !ended_later)
+        max_d2 = std::max(max_d2, end_step(p, list.slab_begin(s), list.slab_begin(s + 1), *end, kind));
+    }
+    if (end && c % 2 == 1 && c + 1 < chunks)
+      max_d2 = std::max(max_d2, end_step(p, list.slab_begin(chunk[c + 1]), list.slab_begin(chunk[c + 1] + 1), *end, kind));
+    done[c].store(1, std::memory_order_release);
+  }
   return max_d2;
 }
 

@@ -11,4 +11,12 @@ inline bool worth_parallel(std::size_t items) { return items >= kParallelThresho
 // face: run alone, these passes took a fifth of a 4,405-particle chute's step on two threads.
 inline constexpr std::size_t kGhostParallelThreshold = 256;
 inline bool worth_parallel_ghost_pass(std::size_t items) { return items >= kGhostParallelThreshold; }
+
+// Tells the core that this thread waits on another (a spin on an atomic flag): yields the
+// pipeline to a sibling hyperthread and saves power.
+inline void spin_pause() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
 }  // namespace talus
