@@ -11,7 +11,7 @@ namespace talus::bench {
 struct CrossPileOptions {
   std::size_t crosses = 2000;
   std::uint64_t steps = 1000;      ///< timed steps per thread count and state
-  int reps = 4;                    ///< repetitions of each timing (the fastest is kept)
+  int reps = 8;                    ///< repetitions of each timing (the fastest is kept)
   bool static_only = false;        ///< skip the flowing state (quick comparisons)
   double settle_speed = 3e-2;      ///< m/s: settled below this largest speed (surface crosses creep at 1-3 cm/s)
   double settle_time_limit = 1.5;  ///< s of simulated time

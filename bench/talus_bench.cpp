@@ -66,7 +66,7 @@ struct Options {
   fs::path cache;
   std::string only;                ///< empty: every case
   std::uint64_t steps4k = 2000, steps32k = 500, warmup = 200;
-  int reps = 5;
+  int reps = 10;
   double flow_time = 0;            ///< sqrt(d/g), age of the cached flowing state; 0: 30 (1 with --quick)
   int gen_threads = 0;             ///< threads for cache generation; 0: omp_get_max_threads()
   std::string probe;               ///< internal: run the memory probe of this case and exit

@@ -189,5 +189,29 @@ TEST(Determinism, StepsEndedInTheForcePassEqualSeparatePasses) {
   expect_same_state(*fused, *separate);
 }
 
+// Without walls the owners of ghosts end their steps and refresh their ghosts in one pass of
+// their own; runs of a few steps each also test the ghosts between two calls of World::run.
+TEST(Determinism, StepsEndedWithTheGhostRefreshEqualSeparatePasses) {
+  ChuteSetup s = four_layer_chute();
+  s.base_diameter = 1;  // a rough base of fixed spheres: no wall
+  auto fused = build_chute(s), separate = build_chute(s);
+  ASSERT_TRUE(fused->walls().empty());
+  separate->set_fused_step_end(false);
+  for (World* w : {fused.get(), separate.get()}) {
+    ParticleStore& p = w->particles_mutable();
+    for (std::size_t i = 0; i < p.owned; ++i)
+      if (p.inv_mass[i] != 0) p.velocity[i] = {3.0 + static_cast<double>(i % 3), 2.0, 4.0};
+  }
+  for (int run = 0; run < 40; ++run) {
+    fused->run(1 + run % 4);
+    separate->run(1 + run % 4);
+  }
+  fused->run(200);
+  separate->run(200);
+  EXPECT_GT(fused->particles().size(), fused->owned_count());  // periodic ghosts
+  EXPECT_GT(fused->rebuilds(), 2u);
+  expect_same_state(*fused, *separate);
+}
+
 }  // namespace
 }  // namespace talus

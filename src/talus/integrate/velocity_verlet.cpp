@@ -301,6 +301,16 @@ double end_step(ParticleStore& p, std::size_t begin, std::size_t end, const Step
   return max_d2;
 }
 
+double end_step_of(ParticleStore& p, std::size_t i, const StepEnd& e) {
+  if (!e.next_step) {
+    kick_drift_one<1, false>(p, i, e.h, e.dt, e.gravity, e.position_at_build);
+    return 0.0;
+  }
+  const SphereArrays a{p.position.data(), p.velocity.data(), p.angular_velocity.data(),
+                       p.force.data(),    p.torque.data(),   e.position_at_build};
+  return end_one(p, a, i, is_plain_sphere(p, i), e);
+}
+
 double end_step(ParticleStore& p, const std::vector<std::uint32_t>& indices, const StepEnd& e) {
   double max_d2 = 0;
   if (!e.next_step) {

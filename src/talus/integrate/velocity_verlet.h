@@ -55,5 +55,7 @@ double end_step(ParticleStore& particles, std::size_t begin, std::size_t end, co
                 const StepEndKind* kind);
 // The same for the listed particles.
 double end_step(ParticleStore& particles, const std::vector<std::uint32_t>& indices, const StepEnd& how);
+// The same for particle i alone; returns its squared distance from its position at the last build.
+double end_step_of(ParticleStore& particles, std::size_t i, const StepEnd& how);
 
 }  // namespace talus

@@ -34,6 +34,20 @@ double World::compute_forces_ending_step(double memory_dt, const StepEnd& end) {
   double max_d2 = 0;
   with_tangential_model(settings_.tangential_model,
                         [&](auto model) { max_d2 = pair_forces<model.value>(memory_dt, &end); });
+  if (walls_.empty()) {
+    // The owners of ghosts are then the only late particles: each folds its ghosts' forces,
+    // ends its step and refreshes its ghosts, in one pass while its data is in cache.
+    ScopedPhase phase(timer_, Phase::integrate);
+    const long owners = static_cast<long>(ghosts_.owners());
+#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel_ghost_pass(ghosts_.owners()))
+    for (long k = 0; k < owners; ++k) {
+      ghosts_.fold_into_owner(p, k);
+      max_d2 = std::max(max_d2, end_step_of(p, ghosts_.owner_at(k), end));
+      ghosts_.refresh_ghosts_of(p, k);
+    }
+    ghosts_fresh_ = end.next_step;  // for move_to_next_step, which follows at once
+    return max_d2;
+  }
   ghosts_.fold_forces(p);
   if (!walls_.empty())
     with_tangential_model(settings_.tangential_model, [&](auto model) { wall_forces<model.value>(memory_dt); });

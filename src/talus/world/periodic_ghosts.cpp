@@ -125,4 +125,27 @@ void PeriodicGhosts::fold_forces(ParticleStore& p) const {
   }
 }
 
+void PeriodicGhosts::fold_into_owner(ParticleStore& p, std::size_t k) const {
+  const std::uint32_t o = fold_owner_[k];
+  for (std::uint32_t f = fold_start_[k]; f < fold_start_[k + 1]; ++f) {
+    const std::size_t g = p.owned + fold_ghost_[f];
+    p.force[o] += p.force[g];
+    p.torque[o] += p.torque[g];
+  }
+}
+
+void PeriodicGhosts::refresh_ghosts_of(ParticleStore& p, std::size_t k) const {
+  const std::uint32_t o = fold_owner_[k];
+  for (std::uint32_t f = fold_start_[k]; f < fold_start_[k + 1]; ++f) {
+    const std::uint32_t g = fold_ghost_[f];
+    const std::size_t i = p.owned + g;
+    p.position[i] = p.position[o] + shift_[g];
+    p.orientation[i] = p.orientation[o];
+    p.velocity[i] = p.velocity[o];
+    p.angular_velocity[i] = p.angular_velocity[o];
+    p.force[i] = {};
+    p.torque[i] = {};
+  }
+}
+
 }  // namespace talus

@@ -21,6 +21,13 @@ class PeriodicGhosts {
   // Both updates in one pass, and ghost forces and torques reset for the next force pass.
   void refresh(ParticleStore& particles) const;
   void fold_forces(ParticleStore& particles) const;        ///< adds ghost forces to owners, each in ghost order
+  // The same owner by owner: owners() distinct owners (ascending), owner_at(k) the k-th, whose
+  // ghosts fold_into_owner(k) adds to it (as fold_forces does) and refresh_ghosts_of(k) sets
+  // from its state (as refresh does). Different owners may be taken by different threads.
+  std::size_t owners() const { return fold_owner_.size(); }
+  std::uint32_t owner_at(std::size_t k) const { return fold_owner_[k]; }
+  void fold_into_owner(ParticleStore& particles, std::size_t k) const;
+  void refresh_ghosts_of(ParticleStore& particles, std::size_t k) const;
   std::size_t count() const { return owner_.size(); }
   std::uint32_t owner(std::size_t ghost) const { return owner_[ghost]; }
 

@@ -270,9 +270,10 @@ void World::move_to_next_step() {
   time_ += settings_.time_step;
   if (needs_rebuild()) {
     rebuild();  // new ghosts copy the current state, with zero forces
-  } else {
+  } else if (!ghosts_fresh_) {
     ghosts_.refresh(particles_);
   }
+  ghosts_fresh_ = false;
 }
 
 std::vector<std::int32_t> World::index_of_gid() const {

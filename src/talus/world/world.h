@@ -199,6 +199,7 @@ class World {
   WallContactList wall_pairs_;
   PeriodicGhosts ghosts_;
   std::vector<Vec3> position_at_build_;
+  bool ghosts_fresh_ = false;  ///< ghosts were refreshed as their owners ended the step
   std::vector<StepEndKind> step_end_;  ///< per owned particle (mark_step_ends)
   std::vector<std::uint32_t> late_;    ///< the owned particles whose step ends late
   std::vector<std::uint32_t> gid_at_build_;
