@@ -88,11 +88,9 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
   // the list), each block of rows into its own region. Particles keep nearly their order from
   // one build to the next (sorted by cell), so the old rows size the regions well; a block
   // that still outgrows its region goes on in a side array of its own.
-  std::vector<std::uint32_t> old_row;
-  old_row.swap(row_);
-  const auto old_entries = [&](std::size_t lo, std::size_t hi) -> double {
-    const std::size_t rows = old_row.empty() ? 0 : old_row.size() - 1;
-    return static_cast<double>(old_row.empty() ? 0 : old_row[std::min(hi, rows)] - old_row[std::min(lo, rows)]);
+  const auto old_entries = [&](std::size_t lo, std::size_t hi) -> double {  // row_ still holds the old rows
+    const std::size_t rows = this->rows();
+    return static_cast<double>(row_.empty() ? 0 : row_[std::min(hi, rows)] - row_[std::min(lo, rows)]);
   };
   clear();
 
@@ -112,7 +110,6 @@ void PairList::build(const ParticleStore& p, const std::vector<CellCoord>& cell_
     const std::size_t lo = owned * b / blocks, hi = owned * (b + 1) / blocks;
     region[b + 1] = region[b] + static_cast<std::size_t>(1.05 * old_entries(lo, hi)) + (hi - lo) / 8 + 16;
   }
-  old_row.swap(row_);  // its memory serves the new rows
   row_.assign(owned + 1, 0);
   make_room(neighbor_, region[blocks]);
   neighbor_.resize(region[blocks]);

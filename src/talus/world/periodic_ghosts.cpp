@@ -81,19 +81,21 @@ void PeriodicGhosts::update_velocities(ParticleStore& p) const {
   }
 }
 
+void PeriodicGhosts::refresh_ghost(ParticleStore& p, std::size_t g) const {
+  const std::size_t k = p.owned + g;
+  const std::uint32_t o = owner_[g];
+  p.position[k] = p.position[o] + shift_[g];
+  p.orientation[k] = p.orientation[o];
+  p.velocity[k] = p.velocity[o];
+  p.angular_velocity[k] = p.angular_velocity[o];
+  p.force[k] = {};
+  p.torque[k] = {};
+}
+
 void PeriodicGhosts::refresh(ParticleStore& p) const {
   const long n = static_cast<long>(owner_.size());
 #pragma omp parallel for schedule(static) if (worth_parallel_ghost_pass(owner_.size()))
-  for (long g = 0; g < n; ++g) {
-    const std::size_t k = p.owned + g;
-    const std::uint32_t o = owner_[g];
-    p.position[k] = p.position[o] + shift_[g];
-    p.orientation[k] = p.orientation[o];
-    p.velocity[k] = p.velocity[o];
-    p.angular_velocity[k] = p.angular_velocity[o];
-    p.force[k] = {};
-    p.torque[k] = {};
-  }
+  for (long g = 0; g < n; ++g) refresh_ghost(p, g);
 }
 
 void PeriodicGhosts::fold_forces(ParticleStore& p) const {
@@ -135,17 +137,7 @@ void PeriodicGhosts::fold_into_owner(ParticleStore& p, std::size_t k) const {
 }
 
 void PeriodicGhosts::refresh_ghosts_of(ParticleStore& p, std::size_t k) const {
-  const std::uint32_t o = fold_owner_[k];
-  for (std::uint32_t f = fold_start_[k]; f < fold_start_[k + 1]; ++f) {
-    const std::uint32_t g = fold_ghost_[f];
-    const std::size_t i = p.owned + g;
-    p.position[i] = p.position[o] + shift_[g];
-    p.orientation[i] = p.orientation[o];
-    p.velocity[i] = p.velocity[o];
-    p.angular_velocity[i] = p.angular_velocity[o];
-    p.force[i] = {};
-    p.torque[i] = {};
-  }
+  for (std::uint32_t f = fold_start_[k]; f < fold_start_[k + 1]; ++f) refresh_ghost(p, fold_ghost_[f]);
 }
 
 }  // namespace talus

@@ -33,6 +33,7 @@ class PeriodicGhosts {
 
  private:
   void group_by_owner(std::size_t owned);  ///< fills the fold_ arrays from owner_
+  void refresh_ghost(ParticleStore& particles, std::size_t ghost) const;  ///< one ghost of refresh()
 
   std::vector<std::uint32_t> owner_;  ///< owned index of each ghost's original
   std::vector<Vec3> shift_;           ///< m, ghost position minus owner position
