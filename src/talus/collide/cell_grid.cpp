@@ -37,13 +37,38 @@ void CellGrid::setup(const Domain& domain, const std::vector<Vec3>& position, st
     first_[a] = domain.periodic[a] ? -1 : 0;
     last_[a] = domain.periodic[a] ? n : n - 1;
   }
-  slab_axis_ = 0;
-  for (int a = 1; a < 3; ++a)
-    if (count_[a] > count_[slab_axis_]) slab_axis_ = a;
+  slab_axis_ = most_even_axis(position, owned);
   const int s = slab_axis_, p = (s + 1) % 3, q = (s + 2) % 3;
   stride_[q] = 1;
   stride_[p] = last_[q] - first_[q] + 1;
   stride_[s] = stride_[p] * (last_[p] - first_[p] + 1);
+}
+
+int CellGrid::most_even_axis(const std::vector<Vec3>& position, std::size_t owned) const {
+  // Slabs are the units the pair pass shares between threads, so they should hold equal
+  // shares of the particles: the axis whose cell layers have the largest participation ratio
+  // (sum n)^2 / sum n^2, the number of equally filled layers that would give the same spread.
+  // A chute's depth has the most cells (a few grains saltate far above the flow) but only
+  // half as many filled layers as its length.
+  // A sample of about 4,096 particles estimates it well at a tenth of the cost of all (this
+  // runs alone at every rebuild).
+  const std::size_t stride = std::max<std::size_t>(1, owned / 4096);
+  std::array<std::vector<std::uint32_t>, 3> layer;
+  for (int a = 0; a < 3; ++a) layer[a].assign(count_[a], 0);
+  double sampled = 0;
+  for (std::size_t i = 0; i < owned; i += stride, ++sampled) {
+    const CellCoord c = coord_of(position[i]);
+    for (int a = 0; a < 3; ++a) ++layer[a][c[a]];
+  }
+  int best = 0;
+  double best_spread = -1;
+  for (int a = 0; a < 3; ++a) {
+    double sum_sq = 0;
+    for (const std::uint32_t n : layer[a]) sum_sq += static_cast<double>(n) * n;
+    const double spread = sum_sq > 0 ? sampled * sampled / sum_sq : count_[a];
+    if (spread > best_spread * (1 + 1e-9)) best = a, best_spread = spread;
+  }
+  return best;
 }
 
 CellCoord CellGrid::coord_of(const Vec3& x) const {

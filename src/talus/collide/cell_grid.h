@@ -20,7 +20,7 @@ class CellGrid {
 
   CellCoord coord_of(const Vec3& x) const;  ///< cell of an owned particle (clamped into the grid)
   int cells(int axis) const { return count_[axis]; }
-  int slab_axis() const { return slab_axis_; }  ///< the axis with the most cells
+  int slab_axis() const { return slab_axis_; }  ///< the axis whose cell layers hold the particles most evenly
   // Linear index of a cell with the slab axis slowest, over the extended range [first, last].
   std::int64_t linear(const CellCoord& c) const {
     return (c[0] - first_[0]) * stride_[0] + (c[1] - first_[1]) * stride_[1] + (c[2] - first_[2]) * stride_[2];
@@ -37,6 +37,8 @@ class CellGrid {
   const std::uint32_t* end(std::int64_t cell) const { return items_.data() + start_[cell + 1]; }
 
  private:
+  int most_even_axis(const std::vector<Vec3>& position, std::size_t owned) const;
+
   Vec3 origin_;
   Vec3 width_;
   int count_[3] = {1, 1, 1};

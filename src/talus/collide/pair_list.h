@@ -26,7 +26,9 @@ struct MemoryLayout {
 // Per-entry contact memory, as parallel arrays (an array is empty when its memory is off).
 struct ContactMemory {
   std::vector<Vec3> spring, normal_prev, rolling;
-  void resize(std::size_t n, const MemoryLayout& layout);
+  void resize(std::size_t n, const MemoryLayout& layout);  ///< n zeroed entries
+  // n entries, those already held left as they are: for a caller that writes every entry.
+  void resize_for_overwrite(std::size_t n, const MemoryLayout& layout);
   bool active(std::size_t e) const;  ///< true if entry e remembers a contact
   void clear(std::size_t e);
   // Copies entry `from` of `source` into entry `to`; `reversed` when the pair's order flipped.
@@ -67,7 +69,8 @@ class PairList {
   // hands them to this list built anew (`origin` as for transfer_memory).
   void carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit, bool every_entry,
              CarriedContacts& carried) const;
-  // Empties the list; its buffers keep their memory for the next build.
+  // Empties the list; its buffers keep their memory for the next build (the memories also
+  // their length, which build() resets).
   void clear();
   void restore_memory(const CarriedContacts& carried, const std::vector<std::uint32_t>& gid,
                       std::vector<std::int64_t>* origin = nullptr);

@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <bit>
+
 #include "talus/world/parallel.h"
 
 namespace talus {
@@ -11,28 +13,61 @@ void PeriodicGhosts::create(ParticleStore& p, const Domain& domain, const CellGr
   owner_.clear();
   shift_.clear();
   // First list the images (images of earlier images make the corners), then append them all
-  // at once.
+  // at once. Each axis is scanned in parallel blocks, each counting its images and then writing
+  // them at its place, so the ghosts come in the order of a serial scan.
   std::vector<Vec3> image_position;
   for (int a = 0; a < 3; ++a) {
     if (!domain.periodic[a]) continue;
     const double length = domain.length(a);
-    const std::size_t n = p.owned + owner_.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const bool is_ghost = k >= p.owned;
-      const std::uint32_t origin = is_ghost ? owner_[k - p.owned] : static_cast<std::uint32_t>(k);
-      const Vec3 base_shift = is_ghost ? shift_[k - p.owned] : Vec3{};
-      const Vec3 x = is_ghost ? image_position[k - p.owned] : p.position[k];
-      for (int side = -1; side <= 1; side += 2) {
-        const bool near = side > 0 ? (x[a] - domain.lo[a] < band) : (domain.hi[a] - x[a] < band);
-        if (!near) continue;
-        Vec3 shift = base_shift;
-        shift[a] += side * length;
-        CellCoord c = cell_of[k];
-        c[a] += side * grid.cells(a);
-        owner_.push_back(origin);
-        shift_.push_back(shift);
-        image_position.push_back(p.position[origin] + shift);
-        cell_of.push_back(c);
+    const std::size_t n = p.owned + owner_.size(), before = owner_.size();
+    const auto position_of = [&](std::size_t k) { return k >= p.owned ? image_position[k - p.owned] : p.position[k]; };
+    // A row lists its own slab and the next one up, never the one below the first slab: no
+    // image there would ever be a neighbour.
+    const bool low_side = a != grid.slab_axis();
+    // Bit 0: an image on the low side (shifted by -length), bit 1: on the high side.
+    const auto sides = [&](std::size_t k) {
+      const double x = position_of(k)[a];
+      return static_cast<unsigned>(low_side && domain.hi[a] - x < band) |
+             (static_cast<unsigned>(x - domain.lo[a] < band) << 1);
+    };
+    const int threads = worth_parallel(n) ? omp_get_max_threads() : 1;
+    std::vector<std::size_t> first(threads + 1, 0);
+#pragma omp parallel num_threads(threads)
+    {
+      const int t = omp_get_thread_num(), team = omp_get_num_threads();
+      const std::size_t lo = n * t / team, hi = n * (t + 1) / team;
+      std::size_t images = 0;
+      for (std::size_t k = lo; k < hi; ++k) images += std::popcount(sides(k));
+      first[t + 1] = images;
+#pragma omp barrier
+#pragma omp single
+      {
+        for (int b = 0; b < team; ++b) first[b + 1] += first[b];
+        const std::size_t total = before + first[team];
+        owner_.resize(total);
+        shift_.resize(total);
+        image_position.resize(total);
+        cell_of.resize(p.owned + total);
+      }
+      std::size_t out = before + first[t];
+      for (std::size_t k = lo; k < hi; ++k) {
+        const unsigned near = sides(k);
+        if (near == 0) continue;
+        const bool is_ghost = k >= p.owned;
+        const std::uint32_t origin = is_ghost ? owner_[k - p.owned] : static_cast<std::uint32_t>(k);
+        const Vec3 base_shift = is_ghost ? shift_[k - p.owned] : Vec3{};
+        for (int side = -1; side <= 1; side += 2) {
+          if (!(near & (side < 0 ? 1u : 2u))) continue;
+          Vec3 shift = base_shift;
+          shift[a] += side * length;
+          CellCoord c = cell_of[k];
+          c[a] += side * grid.cells(a);
+          owner_[out] = origin;
+          shift_[out] = shift;
+          image_position[out] = p.position[origin] + shift;
+          cell_of[p.owned + out] = c;
+          ++out;
+        }
       }
     }
   }

@@ -13,7 +13,8 @@ namespace talus {
 class PeriodicGhosts {
  public:
   // Appends ghosts of every particle within `band` of a periodic face (corners included) and
-  // their cells (the owner's cell shifted by a whole box). Owned particles must be wrapped.
+  // their cells (the owner's cell shifted by a whole box), except below the grid's first slab,
+  // where the pair list never looks. Owned particles must be wrapped.
   void create(ParticleStore& particles, const Domain& domain, const CellGrid& grid, double band,
               std::vector<CellCoord>& cell_of);
   void update_positions(ParticleStore& particles) const;   ///< positions and orientations

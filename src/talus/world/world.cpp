@@ -212,11 +212,23 @@ void World::mark_step_ends() {
   step_end_.resize(owned);
   late_.clear();
   if (has_composites()) return;  // rigid bodies end their steps in a pass of their own
-  for (std::size_t i = 0; i < owned; ++i)
-    step_end_[i] = is_plain_sphere(p, i) ? StepEndKind::plain_sphere : StepEndKind::other;
-  for (std::size_t g = 0; g < ghosts_.count(); ++g) step_end_[ghosts_.owner(g)] = StepEndKind::late;
-  for (std::size_t i = 0; i < std::min(owned, wall_pairs_.rows()); ++i)
-    if (wall_pairs_.row_begin(i) != wall_pairs_.row_end(i)) step_end_[i] = StepEndKind::late;
+  // In parallel: the rebuild's serial parts keep the second thread waiting.
+  const long n = static_cast<long>(owned);
+  const long wall_rows = static_cast<long>(std::min(owned, wall_pairs_.rows()));
+  const long owners = static_cast<long>(ghosts_.owners());
+  const bool parallel = worth_parallel(owned);
+#pragma omp parallel if (parallel)
+  {
+#pragma omp for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      const bool late = i < wall_rows && wall_pairs_.row_begin(i) != wall_pairs_.row_end(i);
+      step_end_[i] = late                       ? StepEndKind::late
+                     : is_plain_sphere(p, i) ? StepEndKind::plain_sphere
+                                             : StepEndKind::other;
+    }
+#pragma omp for schedule(static)
+    for (long k = 0; k < owners; ++k) step_end_[ghosts_.owner_at(k)] = StepEndKind::late;
+  }
   for (std::size_t i = 0; i < owned; ++i)
     if (step_end_[i] == StepEndKind::late) late_.push_back(static_cast<std::uint32_t>(i));
 }
