@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <cmath>
 #include <random>
 
 #include "talus/scenario/chute.h"
@@ -189,8 +190,10 @@ TEST(Determinism, StepsEndedInTheForcePassEqualSeparatePasses) {
   expect_same_state(*fused, *separate);
 }
 
-// Without walls the owners of ghosts end their steps and refresh their ghosts in one pass of
-// their own; runs of a few steps each also test the ghosts between two calls of World::run.
+// Without walls the owners of ghosts end their steps and refresh their ghosts with their slab
+// when all their ghosts share it, the others in a pass of their own after the pair pass;
+// runs of a few steps each also test the ghosts between two calls of World::run. The grains
+// are thrown at one another and at the base, so that contacts cross the periodic faces.
 TEST(Determinism, StepsEndedWithTheGhostRefreshEqualSeparatePasses) {
   ChuteSetup s = four_layer_chute();
   s.base_diameter = 1;  // a rough base of fixed spheres: no wall
@@ -199,17 +202,24 @@ TEST(Determinism, StepsEndedWithTheGhostRefreshEqualSeparatePasses) {
   separate->set_fused_step_end(false);
   for (World* w : {fused.get(), separate.get()}) {
     ParticleStore& p = w->particles_mutable();
-    for (std::size_t i = 0; i < p.owned; ++i)
-      if (p.inv_mass[i] != 0) p.velocity[i] = {3.0 + static_cast<double>(i % 3), 2.0, 4.0};
+    for (std::size_t i = 0; i < p.owned; ++i) {
+      const double k = static_cast<double>(i);
+      if (p.inv_mass[i] != 0) p.velocity[i] = {6 * std::sin(k), 6 * std::cos(1.7 * k), -3 - 2 * std::sin(0.3 * k)};
+    }
   }
   for (int run = 0; run < 40; ++run) {
     fused->run(1 + run % 4);
     separate->run(1 + run % 4);
   }
-  fused->run(200);
-  separate->run(200);
+  std::size_t contacts = 0;  // seen at the ends of the runs
+  for (int run = 0; run < 10; ++run) {
+    fused->run(100);
+    separate->run(100);
+    contacts += fused->diagnostics().contacts;
+  }
   EXPECT_GT(fused->particles().size(), fused->owned_count());  // periodic ghosts
   EXPECT_GT(fused->rebuilds(), 2u);
+  EXPECT_GT(contacts, 100u);
   expect_same_state(*fused, *separate);
 }
 

@@ -35,16 +35,13 @@ double World::compute_forces_ending_step(double memory_dt, const StepEnd& end) {
   with_tangential_model(settings_.tangential_model,
                         [&](auto model) { max_d2 = pair_forces<model.value>(memory_dt, &end); });
   if (walls_.empty()) {
-    // The owners of ghosts are then the only late particles: each folds its ghosts' forces,
-    // ends its step and refreshes its ghosts, in one pass while its data is in cache.
+    // The owners of ghosts are then the only late particles, and most have ended with their
+    // slab; each of the others folds its ghosts' forces, ends its step and refreshes its
+    // ghosts, in one pass while its data is in cache.
     ScopedPhase phase(timer_, Phase::integrate);
-    const long owners = static_cast<long>(ghosts_.owners());
-#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel_ghost_pass(ghosts_.owners()))
-    for (long k = 0; k < owners; ++k) {
-      ghosts_.fold_into_owner(p, k);
-      max_d2 = std::max(max_d2, end_step_of(p, ghosts_.owner_at(k), end));
-      ghosts_.refresh_ghosts_of(p, k);
-    }
+    const long owners = static_cast<long>(late_owner_.size());
+#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel_ghost_pass(late_owner_.size()))
+    for (long n = 0; n < owners; ++n) max_d2 = std::max(max_d2, end_owner_step(late_owner_[n], end));
     ghosts_fresh_ = end.next_step;  // for move_to_next_step, which follows at once
     return max_d2;
   }
@@ -53,6 +50,14 @@ double World::compute_forces_ending_step(double memory_dt, const StepEnd& end) {
     with_tangential_model(settings_.tangential_model, [&](auto model) { wall_forces<model.value>(memory_dt); });
   ScopedPhase phase(timer_, Phase::integrate);
   return std::max(max_d2, end_step(p, late_, end));
+}
+
+double World::end_owner_step(std::uint32_t k, const StepEnd& end) {
+  ParticleStore& p = particles_;
+  ghosts_.fold_into_owner(p, k);
+  const double d2 = end_step_of(p, ghosts_.owner_at(k), end);
+  ghosts_.refresh_ghosts_of(p, k);
+  return d2;
 }
 
 template <TangentialModel Model>
@@ -80,6 +85,12 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   // except the first slab of an even chunk after the first, which the odd chunk before it
   // ends after writing to it, and the late particles (ghost owners, wall contacts).
   const StepEndKind* kind = step_end_.data();
+  const auto end_slab = [&](std::uint32_t s) {
+    double d2 = end_step(p, list.slab_begin(s), list.slab_begin(s + 1), *end, kind);
+    for (std::uint32_t n = inline_owner_start_[s]; n < inline_owner_start_[s + 1]; ++n)
+      d2 = std::max(d2, end_owner_step(inline_owner_[n], *end));
+    return d2;
+  };
   const std::size_t chunk_count = static_cast<std::size_t>(std::max(chunks, 0L));
   std::vector<std::atomic<char>> claimed(chunk_count), done(chunk_count);
   const auto run_chunk = [&](long c) {
@@ -91,10 +102,9 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
     for (std::uint32_t s = chunk[c]; s < chunk[c + 1]; ++s) {
       rows(arrays, table_, memory_dt, list.slab_begin(s), list.slab_begin(s + 1));
       const bool ended_later = c % 2 == 0 && c > 0 && s == chunk[c];
-      if (end && !ended_later) d2 = std::max(d2, end_step(p, list.slab_begin(s), list.slab_begin(s + 1), *end, kind));
+      if (end && !ended_later) d2 = std::max(d2, end_slab(s));
     }
-    if (end && c % 2 == 1 && c + 1 < chunks)
-      d2 = std::max(d2, end_step(p, list.slab_begin(chunk[c + 1]), list.slab_begin(chunk[c + 1] + 1), *end, kind));
+    if (end && c % 2 == 1 && c + 1 < chunks) d2 = std::max(d2, end_slab(chunk[c + 1]));
     done[c].store(1, std::memory_order_release);
     return d2;
   };

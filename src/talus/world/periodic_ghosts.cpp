@@ -175,4 +175,10 @@ void PeriodicGhosts::refresh_ghosts_of(ParticleStore& p, std::size_t k) const {
   for (std::uint32_t f = fold_start_[k]; f < fold_start_[k + 1]; ++f) refresh_ghost(p, fold_ghost_[f]);
 }
 
+bool PeriodicGhosts::ghosts_share_layer(std::size_t k, int axis) const {
+  for (std::uint32_t f = fold_start_[k]; f < fold_start_[k + 1]; ++f)
+    if (shift_[fold_ghost_[f]][axis] != 0) return false;
+  return true;
+}
+
 }  // namespace talus

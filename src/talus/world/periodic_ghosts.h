@@ -29,6 +29,8 @@ class PeriodicGhosts {
   std::uint32_t owner_at(std::size_t k) const { return fold_owner_[k]; }
   void fold_into_owner(ParticleStore& particles, std::size_t k) const;
   void refresh_ghosts_of(ParticleStore& particles, std::size_t k) const;
+  // True if none of owner k's ghosts is shifted along `axis`: they share its cell layer there.
+  bool ghosts_share_layer(std::size_t k, int axis) const;
   std::size_t count() const { return owner_.size(); }
   std::uint32_t owner(std::size_t ghost) const { return owner_[ghost]; }
 

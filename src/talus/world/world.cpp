@@ -211,6 +211,9 @@ void World::mark_step_ends() {
   const std::size_t owned = p.owned;
   step_end_.resize(owned);
   late_.clear();
+  inline_owner_.clear();
+  late_owner_.clear();
+  inline_owner_start_.assign(pairs_.slabs() + 1, 0);
   if (has_composites()) return;  // rigid bodies end their steps in a pass of their own
   // In parallel: the rebuild's serial parts keep the second thread waiting.
   const long n = static_cast<long>(owned);
@@ -231,6 +234,22 @@ void World::mark_step_ends() {
   }
   for (std::size_t i = 0; i < owned; ++i)
     if (step_end_[i] == StepEndKind::late) late_.push_back(static_cast<std::uint32_t>(i));
+
+  // A slab ends once its rows and the previous slab's are done (World::pair_forces). Those rows
+  // are all that touch a ghost in that slab: rows list their own slab and the next one up. So
+  // an owner whose ghosts all share its slab can end with it, while its data is in cache; only
+  // the images across the slab axis's faces wait for the whole pass.
+  std::size_t slab = 0;
+  for (std::size_t k = 0; k < ghosts_.owners(); ++k) {
+    if (!walls_.empty() || !ghosts_.ghosts_share_layer(k, grid_.slab_axis())) {
+      late_owner_.push_back(static_cast<std::uint32_t>(k));
+      continue;
+    }
+    while (ghosts_.owner_at(k) >= pairs_.slab_end(slab)) ++slab;  // owners ascend, as do slabs
+    ++inline_owner_start_[slab + 1];
+    inline_owner_.push_back(static_cast<std::uint32_t>(k));
+  }
+  for (std::size_t s = 0; s + 1 < inline_owner_start_.size(); ++s) inline_owner_start_[s + 1] += inline_owner_start_[s];
 }
 
 void World::run(std::uint64_t steps) {
@@ -299,7 +318,9 @@ std::size_t World::memory_bytes() const {
   const std::size_t per_particle = 6 * sizeof(Vec3) + sizeof(Quat) + 3 * sizeof(double) + 3 * 4;
   return p.position.capacity() * per_particle + pairs_.bytes() + carried_.bytes() +
          cell_of_.capacity() * sizeof(CellCoord) + position_at_build_.capacity() * sizeof(Vec3) +
-         step_end_.capacity() + late_.capacity() * sizeof(std::uint32_t);
+         step_end_.capacity() +
+         (late_.capacity() + inline_owner_.capacity() + inline_owner_start_.capacity() + late_owner_.capacity()) *
+             sizeof(std::uint32_t);
 }
 
 }  // namespace talus

@@ -155,6 +155,9 @@ class World {
   // complete; returns the largest squared drift from the positions at the last build.
   double compute_forces_ending_step(double memory_dt, const StepEnd& end);
   template <TangentialModel Model> double pair_forces(double memory_dt, const StepEnd* end = nullptr);
+  // Folds the ghost forces of owner k (ghosts_.owner_at numbering), ends its step, refreshes
+  // its ghosts; returns its squared travel since the build.
+  double end_owner_step(std::uint32_t k, const StepEnd& end);
   template <TangentialModel Model> void wall_forces(double memory_dt);
   template <TangentialModel Model> void composite_pair_forces(double memory_dt);
   template <TangentialModel Model, bool kProfile>
@@ -202,6 +205,10 @@ class World {
   bool ghosts_fresh_ = false;  ///< ghosts were refreshed as their owners ended the step
   std::vector<StepEndKind> step_end_;  ///< per owned particle (mark_step_ends)
   std::vector<std::uint32_t> late_;    ///< the owned particles whose step ends late
+  // Without walls, owners of ghosts (numbered as by ghosts_.owner_at) whose ghosts all lie in
+  // their own slab end their step with that slab, in the pair pass: inline_owner_ from
+  // inline_owner_start_[s] for slab s. The others (late_owner_) end theirs after the pass.
+  std::vector<std::uint32_t> inline_owner_, inline_owner_start_, late_owner_;
   std::vector<std::uint32_t> gid_at_build_;
   std::vector<Vec3> wall_origin_at_build_;
   std::vector<char> wall_active_at_build_;
