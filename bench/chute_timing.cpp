@@ -46,6 +46,7 @@ std::vector<TimingResult> time_chute(const ChuteCase& c, const std::filesystem::
       best_cpu[k] = std::min(best_cpu[k], process_cpu_seconds() - cpu0);
       best[k] = std::min(best[k], s);
       r.seconds += s;
+      r.rep_seconds.push_back(s);
       for (int f = 0; f < 4; ++f) r.phase_seconds[f] += world->timer().seconds(kPhases[f]) - phase_before[f];
       rebuilds[k] += world->rebuilds() - rebuilds_before;
     }

@@ -24,6 +24,7 @@ struct TimingResult {
   double us_cpu = 0;               ///< same with process CPU time (all threads) instead of wall time, fastest repetition
   std::array<double, 4> phase_seconds{};  ///< integrate, neighbors, pair_forces, wall_forces, all repetitions
   double seconds = 0;              ///< wall time of all repetitions
+  std::vector<double> rep_seconds; ///< wall time of each repetition, in order
   std::uint64_t steps = 0;         ///< timed steps, all repetitions
   std::uint64_t rebuilds = 0;      ///< neighbour-list rebuilds during the timed steps
   std::size_t contacts = 0;        ///< particle-particle contacts at the end

@@ -17,6 +17,8 @@
 //    --reps repetitions of N steps, after a --warmup (contact memory is not cached). In each
 //    repetition 1 and then 2 threads run N steps of the same world, so that both see the same
 //    machine: its speed drifts by tens of per cent over a minute. X_speedup_2t = X_1t / X_2t.
+//  - X_speedup_2t_paired: the median over the repetitions of the 1-thread over the 2-thread
+//    time of the same repetition, which a drift between repetitions does not bias.
 //  - X_1t_cpu: as X_1t with the process CPU time instead of wall time: what 1 thread costs
 //    when other jobs keep it waiting for a core (compare with loadavg).
 //  - contacts_per_particle = 2 contacts / particles, the mean coordination number.
@@ -42,6 +44,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -222,6 +225,18 @@ ProbeResult run_memory_probe(int argc, char** argv, const std::string& name) {
 
 // --- the benchmark ---------------------------------------------------------------------------
 
+// Median over the repetitions of 1-thread time / 2-thread time within the repetition: the two
+// run back to back, so a drift of the machine's speed between repetitions cancels.
+double paired_speedup(const TimingResult& one, const TimingResult& two) {
+  std::vector<double> ratio;
+  for (std::size_t r = 0; r < std::min(one.rep_seconds.size(), two.rep_seconds.size()); ++r)
+    ratio.push_back(one.rep_seconds[r] / two.rep_seconds[r]);
+  if (ratio.empty()) return 0.0;
+  std::sort(ratio.begin(), ratio.end());
+  const std::size_t m = ratio.size() / 2;
+  return ratio.size() % 2 ? ratio[m] : 0.5 * (ratio[m - 1] + ratio[m]);
+}
+
 void run_case(const ChuteCase& c, const Options& o) {
   const fs::path file = cache_path(o.cache, c);
   TimingOptions t;
@@ -241,6 +256,7 @@ void run_case(const ChuteCase& c, const Options& o) {
   metric(x + "_2t", two.us_per_particle_step, "us");
   metric(x + "_1t_cpu", one.us_cpu, "us");
   metric(x + "_speedup_2t", one.us_per_particle_step / two.us_per_particle_step, "x");
+  metric(x + "_speedup_2t_paired", paired_speedup(one, two), "x");
   metric(x + "_contacts_per_particle", 2.0 * static_cast<double>(one.contacts) / n, "count");
   metric(x + "_neighbors_per_particle", static_cast<double>(one.pair_entries) / n, "count");
   metric(x + "_rebuild_interval",
