@@ -47,7 +47,6 @@ struct CarriedContacts {
   std::vector<std::uint32_t> other;  ///< global id b of each record
   std::vector<std::uint32_t> entry;  ///< the record's entry in the list it came from
   ContactMemory memory;              ///< the record's memory, as seen from a
-  std::int64_t find(std::uint32_t a, std::uint32_t b) const;  ///< record of the pair (a, b), or -1
   std::size_t bytes() const;  ///< memory held
 };
 
