@@ -34,14 +34,7 @@ double World::compute_forces_ending_step(double memory_dt, const StepEnd& end) {
   double max_d2 = 0;
   with_tangential_model(settings_.tangential_model,
                         [&](auto model) { max_d2 = pair_forces<model.value>(memory_dt, &end); });
-  if (walls_.empty()) {
-    // The owners of ghosts are then the only late particles, and most have ended with their
-    // slab; each of the others folds its ghosts' forces, ends its step and refreshes its
-    // ghosts, in one pass while its data is in cache.
-    ScopedPhase phase(timer_, Phase::integrate);
-    const long owners = static_cast<long>(late_owner_.size());
-#pragma omp parallel for schedule(static) reduction(max : max_d2) if (worth_parallel_ghost_pass(late_owner_.size()))
-    for (long n = 0; n < owners; ++n) max_d2 = std::max(max_d2, end_owner_step(late_owner_[n], end));
+  if (walls_.empty()) {  // the owners of ghosts, the only late particles, ended in the pass
     ghosts_fresh_ = end.next_step;  // for move_to_next_step, which follows at once
     return max_d2;
   }
@@ -108,27 +101,55 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
     done[c].store(1, std::memory_order_release);
     return d2;
   };
+  // Without walls the owners of ghosts across the slab axis's faces (World::late_owner_) end
+  // here too, once the rows that touch them and their images are done: those of the first
+  // slab, which they lie in, and of the last, next to their images (mark_step_ends checks
+  // that they lie in the first slab; if not, they wait for every chunk). Threads out of
+  // chunks take them in blocks, which fills the wait for the last chunks.
+  const bool owners_here = end && walls_.empty() && !late_owner_.empty();
+  std::atomic<std::size_t> next_owner{0};
+  constexpr std::size_t kOwnerBlock = 64;
+  const auto end_late_owners = [&] {
+    double d2 = 0;
+    for (long c = 0; c < chunks; ++c)
+      if (c == 0 || c == chunks - 1 || !late_owners_in_first_slab_)
+        while (!done[c].load(std::memory_order_acquire)) spin_pause();
+    for (;;) {
+      const std::size_t from = next_owner.fetch_add(kOwnerBlock, std::memory_order_relaxed);
+      if (from >= late_owner_.size()) break;
+      for (std::size_t n = from; n < std::min(from + kOwnerBlock, late_owner_.size()); ++n)
+        d2 = std::max(d2, end_owner_step(late_owner_[n], *end));
+    }
+    return d2;
+  };
   // Each thread starts on its own run of consecutive chunks, evens then odds, so that a chunk's
   // particles stay in one core's cache from step to step (taken by whichever thread was free,
   // they changed cores at random: the 4,400-sphere chute, whose data fits one core's cache,
-  // spent 43 % more CPU on two threads than on one). A thread done with its run takes what is
-  // left of the others' from their ends, evens first. Evens never wait, and each thread claims
-  // its own evens before anything else, so every wait ends.
+  // spent 43 % more CPU on two threads than on one). The last chunk comes first among its
+  // colour, so that the late owners are ready early. A thread done with its run takes what
+  // is left of the others' from their ends, evens first. Evens never wait, and each thread
+  // claims its own evens before anything else, so every wait ends.
   double max_d2 = 0;
 #pragma omp parallel reduction(max : max_d2) if (parallel && chunks > 2)
   {
     const int team = omp_get_num_threads(), me = omp_get_thread_num();
     const auto first = [&](int t) { return chunks * t / team; };
-    const auto claim = [&](long c) { return !claimed[c].exchange(1, std::memory_order_relaxed); };
-    for (int parity = 0; parity < 2; ++parity)
+    const auto take = [&](long c) {
+      if (!claimed[c].exchange(1, std::memory_order_relaxed)) max_d2 = std::max(max_d2, run_chunk(c));
+    };
+    const long last = chunks - 1;
+    for (int parity = 0; parity < 2; ++parity) {
+      if (last % 2 == parity && first(me) <= last && last < first(me + 1)) take(last);
       for (long c = first(me); c < first(me + 1); ++c)
-        if (c % 2 == parity && claim(c)) max_d2 = std::max(max_d2, run_chunk(c));
+        if (c % 2 == parity) take(c);
+    }
     for (int k = 1; k < team; ++k) {
       const int other = (me + k) % team;
       for (int parity = 0; parity < 2; ++parity)
         for (long c = first(other + 1) - 1; c >= first(other); --c)
-          if (c % 2 == parity && claim(c)) max_d2 = std::max(max_d2, run_chunk(c));
+          if (c % 2 == parity) take(c);
     }
+    if (owners_here) max_d2 = std::max(max_d2, end_late_owners());
   }
   return max_d2;
 }

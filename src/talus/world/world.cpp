@@ -250,6 +250,11 @@ void World::mark_step_ends() {
     inline_owner_.push_back(static_cast<std::uint32_t>(k));
   }
   for (std::size_t s = 0; s + 1 < inline_owner_start_.size(); ++s) inline_owner_start_[s + 1] += inline_owner_start_[s];
+  // Images across the slab axis are made on its high side only, of particles within one
+  // range of its low face: in the first slab, as cells are at least one range wide.
+  late_owners_in_first_slab_ = true;
+  for (const std::uint32_t k : late_owner_)
+    late_owners_in_first_slab_ &= pairs_.slabs() > 0 && ghosts_.owner_at(k) < pairs_.slab_end(0);
 }
 
 void World::run(std::uint64_t steps) {

@@ -209,6 +209,7 @@ class World {
   // their own slab end their step with that slab, in the pair pass: inline_owner_ from
   // inline_owner_start_[s] for slab s. The others (late_owner_) end theirs after the pass.
   std::vector<std::uint32_t> inline_owner_, inline_owner_start_, late_owner_;
+  bool late_owners_in_first_slab_ = true;  ///< all of late_owner_ (World::pair_forces relies on it)
   std::vector<std::uint32_t> gid_at_build_;
   std::vector<Vec3> wall_origin_at_build_;
   std::vector<char> wall_active_at_build_;
