@@ -1,6 +1,7 @@
 #include "talus/world/world.h"
 
 #include <malloc.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -156,21 +157,37 @@ void World::rebuild() {
   }
   cell_of.resize(p.owned);
   {
-    std::vector<std::uint32_t> order(p.owned);
-#pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
-    for (long i = 0; i < owned; ++i) {
-      cell_of[i] = grid_.coord_of(p.position[i]);
-      order[i] = static_cast<std::uint32_t>(grid_.linear(cell_of[i]));  // the cell, until it is a rank
+    // Each thread counts its block of particles per cell; the ranks run cell by cell and, within
+    // a cell, block by block, so the sort is stable and the same on any team.
+    const int threads = worth_parallel(p.owned) ? omp_get_max_threads() : 1;
+    const std::size_t cells = static_cast<std::size_t>(grid_.linear_size());
+    std::vector<std::uint32_t> cell(p.owned), from(p.owned);  // from: the permutation's source of each place
+    std::vector<std::vector<std::uint32_t>> next(threads);  // per block and cell: count, then next rank
+#pragma omp parallel num_threads(threads)
+    {
+      const int t = omp_get_thread_num(), team = omp_get_num_threads();
+      const long lo = owned * t / team, hi = owned * (t + 1) / team;
+      std::vector<std::uint32_t>& mine = next[t];
+      mine.assign(cells, 0);
+      for (long i = lo; i < hi; ++i) {
+        cell_of[i] = grid_.coord_of(p.position[i]);
+        cell[i] = static_cast<std::uint32_t>(grid_.linear(cell_of[i]));
+        ++mine[cell[i]];
+      }
+#pragma omp barrier
+#pragma omp single
+      {
+        std::uint32_t rank = 0;
+        for (std::size_t c = 0; c < cells; ++c)
+          for (int b = 0; b < team; ++b) {
+            const std::uint32_t n = next[b][c];
+            next[b][c] = rank;
+            rank += n;
+          }
+      }
+      for (long i = lo; i < hi; ++i) from[mine[cell[i]]++] = static_cast<std::uint32_t>(i);
     }
-    std::vector<std::uint32_t> start(grid_.linear_size() + 1, 0);
-    for (long i = 0; i < owned; ++i) ++start[order[i] + 1];
-    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-    // order[i] becomes the new index of particle i; `from` is its inverse, what the permutation reads.
-    for (long i = 0; i < owned; ++i) order[i] = start[order[i]]++;
-    std::vector<std::uint32_t>().swap(start);
-    std::vector<std::uint32_t> from(p.owned);
-    for (long i = 0; i < owned; ++i) from[order[i]] = static_cast<std::uint32_t>(i);
-    std::vector<std::uint32_t>().swap(order);
+    std::vector<std::uint32_t>().swap(cell);
     p.permute_owned(from);
   }
 #pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
