@@ -187,7 +187,8 @@ void World::rebuild() {
       }
       for (long i = lo; i < hi; ++i) from[mine[cell[i]]++] = static_cast<std::uint32_t>(i);
     }
-    std::vector<std::uint32_t>().swap(cell);
+    std::vector<std::uint32_t>().swap(cell);  // the counts go before the permutation's scratch comes
+    std::vector<std::vector<std::uint32_t>>().swap(next);
     p.permute_owned(from);
   }
 #pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
