@@ -106,7 +106,7 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   // slab, which they lie in, and of the last, next to their images (mark_step_ends checks
   // that they lie in the first slab; if not, they wait for every chunk). Threads out of
   // chunks take them in blocks, which fills the wait for the last chunks.
-  const bool owners_here = end && walls_.empty() && !late_owner_.empty();
+  const bool owners_here = end && !late_owner_.empty();
   std::atomic<std::size_t> next_owner{0};
   constexpr std::size_t kOwnerBlock = 64;
   const auto end_late_owners = [&] {

@@ -256,10 +256,12 @@ void World::mark_step_ends() {
   // A slab ends once its rows and the previous slab's are done (World::pair_forces). Those rows
   // are all that touch a ghost in that slab: rows list their own slab and the next one up. So
   // an owner whose ghosts all share its slab can end with it, while its data is in cache; only
-  // the images across the slab axis's faces wait for the whole pass.
+  // the images across the slab axis's faces wait for the whole pass. (With walls, every late
+  // particle waits for the ghost fold and the wall forces instead: the lists stay empty.)
+  if (!walls_.empty()) return;
   std::size_t slab = 0;
   for (std::size_t k = 0; k < ghosts_.owners(); ++k) {
-    if (!walls_.empty() || !ghosts_.ghosts_share_layer(k, grid_.slab_axis())) {
+    if (!ghosts_.ghosts_share_layer(k, grid_.slab_axis())) {
       late_owner_.push_back(static_cast<std::uint32_t>(k));
       continue;
     }

@@ -207,7 +207,8 @@ class World {
   std::vector<std::uint32_t> late_;    ///< the owned particles whose step ends late
   // Without walls, owners of ghosts (numbered as by ghosts_.owner_at) whose ghosts all lie in
   // their own slab end their step with that slab, in the pair pass: inline_owner_ from
-  // inline_owner_start_[s] for slab s. The others (late_owner_) end theirs after the pass.
+  // inline_owner_start_[s] for slab s. The others (late_owner_) end theirs later in the same
+  // parallel region. With walls both lists are empty (World::mark_step_ends).
   std::vector<std::uint32_t> inline_owner_, inline_owner_start_, late_owner_;
   bool late_owners_in_first_slab_ = true;  ///< all of late_owner_ (World::pair_forces relies on it)
   std::vector<std::uint32_t> gid_at_build_;
