@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "talus/contact/head_on_impact.h"
 #include "talus/contact/parameter_procedure.h"
 
 namespace talus::bench {
@@ -110,6 +111,25 @@ ChuteCase make_case(const std::string& name, double length, double width, double
   c.setup.fill_height = fill_height;
   c.setup.angle_deg = 24;
   c.flow_time = flow_time;
+  return c;
+}
+
+ContactParams hertz_mindlin_chute_contact() {
+  // t_c = 2.868 (m*^2 / (R* E*^2 v))^(1/5) = 0.00497 at m* = 1/2, R* = 1/4, v = 1: E* = 8.0e6.
+  const double poisson = 0.3, e_star = std::pow(2.868 / 0.00497, 2.5);
+  const ElasticModuli moduli = elastic_moduli(2 * (1 - poisson * poisson) * e_star, poisson, false);
+  ContactParams c = weinhart_chute_contact();
+  c.normal_law = normal_law_index<HertzNormal>();
+  c.damping_scaling = DampingScaling::tsuji;
+  c.tangential_law = TangentialStiffness::mindlin;
+  c.clamp = NormalClamp::free;
+  c.impact_speed = 1;
+  c.normal_stiffness = hertz_stiffness(moduli);
+  c.tangential_stiffness = mindlin_stiffness(moduli);
+  c.normal_damping = {};
+  c.normal_damping.per_sqrt_reduced_mass =
+      params::damping_for_restitution(c.normal_law, false, 0.883) * std::sqrt(c.normal_stiffness);
+  c.tangential_damping = c.normal_damping;
   return c;
 }
 

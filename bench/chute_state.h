@@ -22,6 +22,10 @@ struct ChuteCase {
 // The case's chute: Weinhart contact for flow-flow and flow-base, `length` x `width`, H, theta.
 ChuteCase make_case(const std::string& name, double length, double width, double fill_height, double flow_time);
 
+// The chute's flow under Hertz-Mindlin (Tsuji dashpots, eta_t = eta_n, unclamped as Weinhart's
+// Eq. 3), with the linear law's contact time at an impact of sqrt(g d) and its restitution 0.883.
+ContactParams hertz_mindlin_chute_contact();
+
 // An empty World with the settings and contact table that build_chute(s) gives its world.
 // The same as make_chute_world (src/talus/scenario/chute.h).
 std::unique_ptr<World> make_empty_chute_world(const ChuteSetup& s);

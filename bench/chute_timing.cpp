@@ -30,6 +30,7 @@ std::vector<TimingResult> time_chute(const ChuteCase& c, const std::filesystem::
   std::vector<double> best(counts, std::numeric_limits<double>::infinity()), best_cpu = best;
   std::vector<std::uint64_t> rebuilds(counts, 0);
   auto world = load_state(c, cache_file);
+  if (o.contacts) world->contacts() = *o.contacts;
   omp_set_num_threads(o.threads.front());
   world->run(o.warmup);
   for (int rep = 0; rep < o.repetitions; ++rep) {

@@ -14,6 +14,7 @@ struct TimingOptions {
   std::uint64_t warmup = 200;      ///< steps after loading, untimed: rebuilds the contact memory
   std::uint64_t steps = 2000;      ///< steps per timed repetition and thread count
   int repetitions = 3;             ///< the fastest repetition is reported (other jobs share the machine)
+  const ContactTable* contacts = nullptr;  ///< replaces the cached world's contact law after loading (null: keep)
 };
 
 struct TimingResult {

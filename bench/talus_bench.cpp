@@ -276,6 +276,18 @@ void run_case(const ChuteCase& c, const Options& o) {
   }
   metric(x + "_2t_share_other", 100 * (two.seconds - accounted) / two.seconds, "%");
   metric(x + "_mean_speed", one.mean_speed, "sqrt(gd)");
+  if (x == "chute32k") {  // the same flowing state under Hertz-Mindlin, one thread
+    ContactTable hertz = make_empty_chute_world(c.setup)->contacts();
+    for (int a = 0; a < hertz.species(); ++a)
+      for (int b = a; b < hertz.species(); ++b) hertz.set_pair(a, b, hertz_mindlin_chute_contact());
+    TimingOptions h = t;
+    h.threads = {1};
+    h.contacts = &hertz;
+    const TimingResult hm = time_chute(c, file, h).front();
+    metric(x + "_hertz_1t", hm.us_per_particle_step, "us");
+    metric(x + "_hertz_over_linear_1t", hm.us_per_particle_step / one.us_per_particle_step, "x");
+    metric(x + "_hertz_contacts_per_particle", 2.0 * static_cast<double>(hm.contacts) / n, "count");
+  }
   const bool identical = same_on_one_and_two_threads(c, file, std::min<std::uint64_t>(t.steps, 200));
   metric(x + "_threads_identical", identical ? 1 : 0, "bool");
   metric(x + "_loadavg", load_average(), "load");

@@ -16,18 +16,11 @@ namespace {
 
 double rel_diff(const Vec3& a, const Vec3& b, double scale) { return norm(a - b) / scale; }
 
-// Random touching pairs of polydisperse spheres with random motions and springs, so that some
-// contacts stick and others slide; two species pairs, one with mass-scaled damping and one
-// with k_t = 0 (the spring is then reset to zero when sliding).
-TEST(SphereElasticBatch, MatchesTheScalarLawContactByContact) {
+// The three species pairs of the tests: one with mass-scaled damping and one with k_t = 0 (the
+// spring is then reset to zero when sliding).
+ContactTable three_pairs(const ContactParams& a) {
   ContactTable table;
   table.resize(2, 0);
-  ContactParams a;
-  a.normal_stiffness = 2e5;
-  a.normal_damping.coefficient = 50;
-  a.tangential_stiffness = 2e5 * 2 / 7;
-  a.tangential_damping.coefficient = 50;
-  a.friction = 0.5;
   ContactParams b = a;
   b.normal_damping = {0, 40, 3};
   b.tangential_damping = {1, 20, 0};
@@ -38,7 +31,24 @@ TEST(SphereElasticBatch, MatchesTheScalarLawContactByContact) {
   table.set_pair(0, 0, a);
   table.set_pair(0, 1, b);
   table.set_pair(1, 1, c);
+  return table;
+}
 
+ContactParams linear_params() {
+  ContactParams a;
+  a.normal_stiffness = 2e5;
+  a.normal_damping.coefficient = 50;
+  a.tangential_stiffness = 2e5 * 2 / 7;
+  a.tangential_damping.coefficient = 50;
+  a.friction = 0.5;
+  return a;
+}
+
+// Random touching pairs of polydisperse spheres with random motions and springs, so that some
+// contacts stick and others slide.
+template <bool kGrown>
+void expect_batch_matches_scalar(const ContactTable& table) {
+  ASSERT_EQ(batch_law(table), kGrown ? BatchLaw::grown : BatchLaw::linear);
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   const auto rand_vec = [&](double s) { return Vec3{u(rng), u(rng), u(rng)} * s; };
@@ -81,7 +91,7 @@ TEST(SphereElasticBatch, MatchesTheScalarLawContactByContact) {
           dt, h));
     }
     batch.count = static_cast<std::uint32_t>(expected.size());
-    sphere_elastic_batch(batch, position.data(), velocity.data(), spin.data(), radius.data(), inv_mass.data(), species.data(), table,
+    sphere_elastic_batch<kGrown>(batch, position.data(), velocity.data(), spin.data(), radius.data(), inv_mass.data(), species.data(), table,
                          spring_batch.data(), dt);
     for (std::uint32_t k = 0; k < batch.count; ++k) {
       // Scales: the force and torque magnitudes of this contact. The two forms differ only by
@@ -105,6 +115,35 @@ TEST(SphereElasticBatch, MatchesTheScalarLawContactByContact) {
   // Both branches of the Coulomb truncation were exercised.
   EXPECT_GT(slid, 5);
   EXPECT_GT(stuck, 5);
+}
+
+
+TEST(SphereElasticBatch, MatchesTheScalarLawContactByContact) { expect_batch_matches_scalar<false>(three_pairs(linear_params())); }
+
+TEST(SphereElasticBatch, ClampedLinearMatchesTheScalarLaw) {
+  ContactParams a = linear_params();
+  a.clamp = NormalClamp::clamped;
+  expect_batch_matches_scalar<false>(three_pairs(a));
+}
+
+// Hertz-Mindlin with Tsuji's dashpots: every coefficient grows with the contact radius.
+TEST(SphereElasticBatch, HertzMindlinMatchesTheScalarLaw) {
+  ContactParams a = linear_params();
+  a.normal_law = normal_law_index<HertzNormal>();
+  a.damping_scaling = DampingScaling::tsuji;
+  a.tangential_law = TangentialStiffness::mindlin;
+  a.normal_stiffness = 2e7;
+  a.tangential_stiffness = 1.6e7;
+  expect_batch_matches_scalar<true>(three_pairs(a));
+}
+
+// Pairs under different laws cannot share a batch.
+TEST(SphereElasticBatch, MixedLawsRunContactByContact) {
+  ContactTable table = three_pairs(linear_params());
+  ContactParams hertz = table.pair(1, 1);
+  hertz.normal_law = normal_law_index<HertzNormal>();
+  table.set_pair(1, 1, hertz);
+  EXPECT_EQ(batch_law(table), BatchLaw::none);
 }
 
 }  // namespace

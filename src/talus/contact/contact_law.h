@@ -1,12 +1,16 @@
 #pragma once
-// The spring-dashpot contact law, assembled from small sub-models (normal, tangential,
-// rolling), each taking the contact geometry explicitly. One function serves particle
-// pairs, particle-wall contacts and (later) every contact point between convex parts.
+// The contact law, assembled from sub-models, each taking the contact geometry explicitly:
+// normal (contact/normal_laws.h: linear, Hertz) with its dashpot (DampingLaw, optionally
+// following the stiffness after Tsuji) and clamp; tangential (the TangentialModel history
+// rule, with a constant or Mindlin stiffness); rolling (Huet et al. 2021, App. A, or none).
+// One function serves sphere pairs, particle-wall contacts and every contact point between
+// convex parts; the vector sphere batch (world/sphere_elastic_batch.h) is this law line for line.
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
 
 #include "talus/contact/contact_params.h"
+#include "talus/contact/normal_laws.h"
 #include "talus/math/vec3.h"
 
 namespace talus {
@@ -69,6 +73,40 @@ inline Vec3 rotate_between(const Vec3& a, const Vec3& b, const Vec3& v) {
   return v + wv + cross(w, wv) * (1.0 / (1.0 + c));
 }
 
+// The spring and dashpot coefficients of one contact at its present overlap: the parameters
+// for a linear law, grown with the contact radius for Hertz and Mindlin.
+struct ContactCoefficients {
+  double kn, eta_n, kt, eta_t;  ///< N/m, N s/m
+};
+
+[[gnu::always_inline]] inline ContactCoefficients contact_coefficients(const ContactParams& p, double reduced_mass,
+                                                                       double reduced_radius, double overlap) {
+  ContactCoefficients c{p.normal_stiffness, p.normal_damping.at(reduced_mass), p.tangential_stiffness,
+                        p.tangential_damping.at(reduced_mass)};
+  if (p.normal_law != 0) [[unlikely]] {
+    const double s = normal_stiffness_scale(p.normal_law, reduced_radius, overlap);
+    c.kn *= s;
+    if (p.damping_scaling == DampingScaling::tsuji) {  // Tsuji et al. 1992: eta ~ sqrt(m* k_eff)
+      const double d = std::sqrt(s);
+      c.eta_n *= d;
+      c.eta_t *= d;
+    }
+  }
+  if (p.tangential_law == TangentialStiffness::mindlin) [[unlikely]]
+    c.kt *= std::sqrt(reduced_radius * overlap);  // Mindlin 1949: k_t = 8 G* a
+  return c;
+}
+
+// Whether the normal force is bounded at zero under tangential model `model`.
+inline bool clamps_normal(const ContactParams& p, TangentialModel model) {
+  return p.clamp == NormalClamp::clamped || (p.clamp == NormalClamp::by_model && model != TangentialModel::elastic_spring);
+}
+
+// Elastic energy of the normal spring: the integral of k_n s(delta) delta, k_eff delta^2 / (p + 1).
+inline double normal_elastic_energy(const ContactParams& p, double kn_eff, double overlap) {
+  return kn_eff * overlap * overlap / (normal_exponent(p.normal_law) + 1);
+}
+
 template <TangentialModel Model>
 [[gnu::always_inline]] inline ContactResult contact_force(const ContactGeometry& g, const ContactMotion& m,
                                    const ContactParams& p, double reduced_mass,
@@ -82,13 +120,14 @@ template <TangentialModel Model>
   const Vec3 vt = vc - vn * n;
 
   // Normal force. Weinhart et al. 2012, Eq. (3); Huet et al. 2021, Eq. (5) adds max(., 0).
-  const double eta_n = p.normal_damping.at(reduced_mass);
-  double fn = p.normal_stiffness * g.overlap - eta_n * vn;
-  if constexpr (Model != TangentialModel::elastic_spring) fn = std::max(fn, 0.0);
+  const ContactCoefficients co = contact_coefficients(p, reduced_mass, reduced_radius, g.overlap);
+  const double eta_n = co.eta_n;
+  double fn = co.kn * g.overlap - eta_n * vn;
+  if (clamps_normal(p, Model)) fn = std::max(fn, 0.0);
   const double fn_abs = std::abs(fn);
   const double f_max = p.friction * fn_abs;
-  const double eta_t = p.tangential_damping.at(reduced_mass);
-  const double kt = p.tangential_stiffness;
+  const double eta_t = co.eta_t;
+  const double kt = co.kt;
 
   Vec3 ft;
   if constexpr (Model == TangentialModel::memory) {
@@ -134,7 +173,7 @@ template <TangentialModel Model>
     if (p.rolling.from_normal) {
       const double r = 2.0 * reduced_radius;
       const double scale = 3.0 * p.rolling.friction * p.rolling.friction * r * r;  // Eq. (A9)
-      kr = scale * p.normal_stiffness;
+      kr = scale * co.kn;
       eta_r = scale * eta_n;
     }
     Vec3 moment;

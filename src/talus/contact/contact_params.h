@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of one kind of contact (a pair of species, or a species and a wall material).
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 namespace talus {
@@ -41,13 +42,43 @@ struct RollingParams {
   double damping = 0;           ///< N m s/rad, eta_r when !from_normal
 };
 
+// Whether a dashpot follows the contact's stiffness. With a stiffness that grows with the
+// overlap (Hertz), Tsuji et al. (1992) take eta proportional to sqrt(m* k(delta)), so that the
+// restitution does not depend on the impact speed; for a linear spring both are the same.
+enum class DampingScaling : std::uint8_t {
+  constant,  ///< eta as DampingLaw gives it
+  tsuji,     ///< eta = DampingLaw * sqrt(k_eff / k_n) (Tsuji et al. 1992)
+};
+
+// How k_t follows the contact.
+enum class TangentialStiffness : std::uint8_t {
+  constant,  ///< k_t, N/m
+  mindlin,   ///< k_t = 8 G* sqrt(R* delta) (Mindlin 1949, no-slip), tangential_stiffness = 8 G*, Pa
+};
+
+// Whether the normal force may pull. A dashpot that separates the pair faster than the spring
+// pushes would pull it back; Huet et al. 2021, Eq. (5) bounds the force at zero, Weinhart et
+// al. 2012, Eq. (3) does not.
+enum class NormalClamp : std::uint8_t {
+  by_model,  ///< the shorthands' convention: clamped, except under the elastic-spring model
+  clamped,   ///< max(F_n, 0)
+  free,      ///< F_n as the spring and dashpot give it
+};
+
 struct ContactParams {
-  double normal_stiffness = 0;       ///< k_n, N/m
+  // Hot fields, gathered by offset in the vector sphere batch: doubles only.
+  double normal_stiffness = 0;       ///< k_n, N/m (linear) or 4/3 E*, Pa (Hertz)
   DampingLaw normal_damping;         ///< eta_n
-  double tangential_stiffness = 0;   ///< k_t, N/m
+  double tangential_stiffness = 0;   ///< k_t, N/m (constant) or 8 G*, Pa (Mindlin)
   DampingLaw tangential_damping;     ///< eta_t
   double friction = 0;               ///< mu_c, Coulomb sliding coefficient
   RollingParams rolling;
+  // Cold fields: what the time step needs.
+  double impact_speed = 0;           ///< m/s, the fastest expected impact (sets a Hertz contact time)
+  std::uint8_t normal_law = 0;       ///< index in the NormalLaws registry (contact/normal_laws.h); 0 is linear
+  DampingScaling damping_scaling = DampingScaling::constant;
+  TangentialStiffness tangential_law = TangentialStiffness::constant;
+  NormalClamp clamp = NormalClamp::by_model;
 };
 
 }  // namespace talus

@@ -76,13 +76,6 @@ void read_shape(const ScenarioFile& f, const std::string& key, SpeciesInfo& s) {
 
 std::string indexed(const std::string& array, std::size_t k) { return array + "[" + std::to_string(k) + "]"; }
 
-TangentialModel read_model(const ScenarioFile& f) {
-  const std::string m = f.get_choice_or("contact.model", "memory", {"memory", "memoryless", "elastic_spring"});
-  if (m == "memoryless") return TangentialModel::memoryless;
-  if (m == "elastic_spring") return TangentialModel::elastic_spring;
-  return TangentialModel::memory;
-}
-
 Domain read_domain(const ScenarioFile& f) {
   Domain d;
   d.lo = f.get<Vec3>("domain.lo");
@@ -182,7 +175,7 @@ Scenario load_scenario(ScenarioFile& f) {
   const double steps_per_contact = f.get_or<double>("run.steps_per_contact", 50, io::in_range(10, 1e9));
 
   WorldSettings ws;
-  ws.tangential_model = read_model(f);
+  ws.tangential_model = read_tangential_model(f);
 
   // Species.
   std::vector<SpeciesInfo> species;
@@ -254,12 +247,14 @@ Scenario load_scenario(ScenarioFile& f) {
           tables.insert(tables.begin(), key);
       }
       ContactContext ctx{species[a].mass() * species[b].mass() / (species[a].mass() + species[b].mass()),
-                         species[a].radius, species[a].inertia(), species[b].radius, species[b].inertia()};
+                         species[a].radius, species[a].inertia(), species[b].radius, species[b].inertia(),
+                         ws.tangential_model, false, species[a].body || species[b].body};
       table.set_pair(static_cast<int>(a), static_cast<int>(b), read_contact(f, tables, ctx));
     }
   for (std::size_t a = 0; a < species.size(); ++a)
     for (std::size_t m = 0; m < materials.size(); ++m) {
-      ContactContext ctx{species[a].mass(), species[a].radius, species[a].inertia(), 0, 0};
+      ContactContext ctx{species[a].mass(), species[a].radius, species[a].inertia(), 0, 0, ws.tangential_model, true,
+                         species[a].body.has_value()};
       table.set_wall(static_cast<int>(a), static_cast<int>(m), read_contact(f, {"contact.wall", "contact"}, ctx));
     }
 
@@ -268,13 +263,12 @@ Scenario load_scenario(ScenarioFile& f) {
   for (std::size_t a = 0; a < species.size(); ++a) {
     for (std::size_t b = a; b < species.size(); ++b) {
       const double m = species[a].mass() * species[b].mass() / (species[a].mass() + species[b].mass());
-      const ContactParams& c = table.pair(static_cast<int>(a), static_cast<int>(b));
-      tc_min = std::min(tc_min, params::collision_time(c.normal_stiffness, c.normal_damping.at(m), m));
+      const double r = species[a].radius * species[b].radius / (species[a].radius + species[b].radius);
+      tc_min = std::min(tc_min, contact_duration(table.pair(static_cast<int>(a), static_cast<int>(b)), m, r));
     }
     for (std::size_t mt = 0; mt < materials.size(); ++mt) {
-      const double m = species[a].mass();
-      const ContactParams& c = table.wall(static_cast<int>(a), static_cast<int>(mt));
-      tc_min = std::min(tc_min, params::collision_time(c.normal_stiffness, c.normal_damping.at(m), m));
+      tc_min = std::min(tc_min, contact_duration(table.wall(static_cast<int>(a), static_cast<int>(mt)), species[a].mass(),
+                                                 species[a].radius));
     }
   }
   ws.time_step = f.get_or<double>("run.time_step", tc_min / steps_per_contact, io::positive);

@@ -9,18 +9,19 @@ namespace talus {
 
 namespace {
 // k_r of a contact, as the contact law computes it (Huet et al. 2021, Eq. A9 when from_normal).
-double rolling_stiffness(const ContactParams& c, double reduced_radius) {
+double rolling_stiffness(const ContactParams& c, double reduced_radius, double kn) {
   if (!c.rolling.from_normal) return c.rolling.stiffness;
   const double r = 2 * reduced_radius;
-  return 3 * c.rolling.friction * c.rolling.friction * r * r * c.normal_stiffness;
+  return 3 * c.rolling.friction * c.rolling.friction * r * r * kn;
 }
 
 void add_contact_energy(Diagnostics& d, const ContactParams& c, double overlap, double radius,
                         double reduced_radius, const ContactMemory& mem, std::size_t e) {
-  d.elastic_normal += 0.5 * c.normal_stiffness * overlap * overlap;
-  if (!mem.spring.empty()) d.elastic_tangential += 0.5 * c.tangential_stiffness * norm2(mem.spring[e]);
+  const ContactCoefficients k = contact_coefficients(c, 0, reduced_radius, overlap);
+  d.elastic_normal += normal_elastic_energy(c, k.kn, overlap);
+  if (!mem.spring.empty()) d.elastic_tangential += 0.5 * k.kt * norm2(mem.spring[e]);
   if (!mem.rolling.empty() && c.rolling.enabled) {
-    const double kr = rolling_stiffness(c, reduced_radius);
+    const double kr = rolling_stiffness(c, reduced_radius, k.kn);
     if (kr > 0) d.elastic_rolling += 0.5 * norm2(mem.rolling[e]) / kr;
   }
   d.max_overlap_ratio = std::max(d.max_overlap_ratio, overlap / radius);
@@ -50,6 +51,7 @@ Diagnostics World::diagnostics() const {
   }
   d.mean_speed = mobile ? speed_sum / mobile : 0;
   if (!ready_) return d;
+  // Shaped bodies take the linear law only (the scenario reader refuses the others for them).
   auto add_points = [&](std::span<const SubContact> list, const ContactParams& c, double radius) {
     for (const SubContact& s : list) {
       d.elastic_normal += 0.5 * s.share * c.normal_stiffness * s.overlap * s.overlap;

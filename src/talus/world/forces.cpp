@@ -68,7 +68,7 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   const bool parallel = worth_parallel(p.owned);
   const std::vector<std::uint32_t>& chunk = list.slab_chunks();
   const long chunks = static_cast<long>(chunk.size()) - 1;
-  const auto rows = with_memory_flags<Model>(mem);
+  const auto rows = with_memory_flags<Model>(mem, table_);
   // Chunk c writes to its own slabs and the first slab of chunk c + 1 only. Even chunks add
   // their rows first, then odd ones: an odd chunk waits for the even chunks on either side,
   // never for all of them, and the chunks depend on the list alone, never on the thread count

@@ -22,7 +22,9 @@ template <TangentialModel Model>
   g.arm_i = g.normal * -(ri - 0.5 * g.overlap);  // Weinhart et al. 2012, branch vector b_ij after Eq. (8)
   g.arm_j = g.normal * (rj - 0.5 * g.overlap);
   g.inv_distance = inv_dist;
-  const double reduced_radius = params.rolling.enabled ? ri * rj / reach : 0.0;
+  const bool needs_radius = params.rolling.enabled || params.normal_law != 0 ||
+                            params.tangential_law != TangentialStiffness::constant;
+  const double reduced_radius = needs_radius ? ri * rj / reach : 0.0;
   return contact_force<Model>(g, m, params, reduced_mass, reduced_radius, memory_dt, h);
 }
 

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+
+#include "talus/contact/contact_law.h"
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #include <immintrin.h>
@@ -13,6 +16,23 @@
 
 namespace talus {
 
+BatchLaw batch_law(const ContactTable& table) {
+  const ContactParams& first = table.pair(0, 0);
+  const bool linear = first.normal_law == normal_law_index<LinearNormal>();
+  if (!linear && first.normal_law != normal_law_index<HertzNormal>()) return BatchLaw::none;
+  for (int a = 0; a < table.species(); ++a)
+    for (int b = 0; b < table.species(); ++b) {
+      const ContactParams& p = table.pair(a, b);
+      if (p.normal_law != first.normal_law || p.damping_scaling != first.damping_scaling ||
+          p.tangential_law != first.tangential_law ||
+          clamps_normal(p, TangentialModel::elastic_spring) != clamps_normal(first, TangentialModel::elastic_spring))
+        return BatchLaw::none;
+    }
+  const bool grown = !linear || first.tangential_law != TangentialStiffness::constant;
+  return grown ? BatchLaw::grown : BatchLaw::linear;
+}
+
+template <bool kGrown>
 void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, const Vec3* __restrict velocity,
                           const Vec3* __restrict spin, const double* __restrict radius,
                           const double* __restrict inv_mass,
@@ -126,6 +146,12 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
     mu[k] = p.friction;
   }
 #endif
+  // The law's options, the same for every pair (batch_law).
+  const ContactParams& law = table.pair(0, 0);
+  const bool hertz = law.normal_law == normal_law_index<HertzNormal>();
+  const bool tsuji = hertz && law.damping_scaling == DampingScaling::tsuji;
+  const bool mindlin = law.tangential_law == TangentialStiffness::mindlin;
+  const double floor = clamps_normal(law, TangentialModel::elastic_spring) ? 0.0 : -std::numeric_limits<double>::infinity();
 #pragma omp simd
   for (std::uint32_t k = 0; k < lanes; ++k) {
     // Geometry: Weinhart et al. 2012, branch vectors after Eq. (8).
@@ -139,20 +165,29 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
     const Vec3 vc = vij + cross(Vec3{wix[k], wiy[k], wiz[k]}, arm_i) - cross(Vec3{wjx[k], wjy[k], wjz[k]}, arm_j);
     const double vn = dot(vc, n);
     const Vec3 vt = vc - vn * n;
-    const double fn = kn[k] * overlap - eta_n[k] * vn;  // Eq. (3)
+    double k_n = kn[k], e_n = eta_n[k], k_t = kt[k], e_t = eta_t[k];
+    if constexpr (kGrown) {  // contact_coefficients, lane by lane: a = sqrt(R* delta)
+      const double a = std::sqrt(ri[k] * rj[k] / (ri[k] + rj[k]) * overlap);
+      const double damp = std::sqrt(a);
+      k_n = hertz ? k_n * a : k_n;
+      e_n = tsuji ? e_n * damp : e_n;
+      e_t = tsuji ? e_t * damp : e_t;
+      k_t = mindlin ? k_t * a : k_t;
+    }
+    const double fn = std::max(k_n * overlap - e_n * vn, floor);  // Eq. (3); Huet et al. 2021, Eq. (5) when clamped
     const double f_max = mu[k] * std::abs(fn);
     Vec3 s{sx[k], sy[k], sz[k]};
     s += (vt - (dot(s, vij) * inv_dist) * n) * dt;      // Eq. (9), forward Euler
-    Vec3 ft = -kt[k] * s - eta_t[k] * vt;               // Eq. (7)
+    Vec3 ft = -k_t * s - e_t * vt;                      // Eq. (7)
     const double ft2 = norm2(ft);
     // Alg. 2: truncate to mu |f_n|. Both branches are computed and one is selected (a vector
     // runs them all); the unused one may divide by zero harmlessly.
     const bool slides = ft2 > f_max * f_max;
     const double truncation = f_max / std::sqrt(ft2);
     ft *= slides ? truncation : 1.0;
-    const double inv_kt = -1.0 / kt[k];
-    const double back = kt[k] > 0 ? inv_kt : 0.0;
-    const Vec3 s_slid = (ft + eta_t[k] * vt) * back;
+    const double inv_kt = -1.0 / k_t;
+    const double back = k_t > 0 ? inv_kt : 0.0;
+    const Vec3 s_slid = (ft + e_t * vt) * back;
     sx[k] = slides ? s_slid.x : s.x;
     sy[k] = slides ? s_slid.y : s.y;
     sz[k] = slides ? s_slid.z : s.z;
@@ -171,5 +206,10 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
   }
   for (std::uint32_t k = 0; k < n; ++k) spring[b.entry[k]] = {sx[k], sy[k], sz[k]};
 }
+
+template void sphere_elastic_batch<false>(ContactBatch&, const Vec3*, const Vec3*, const Vec3*, const double*,
+                                          const double*, const std::int32_t*, const ContactTable&, Vec3*, double);
+template void sphere_elastic_batch<true>(ContactBatch&, const Vec3*, const Vec3*, const Vec3*, const double*,
+                                         const double*, const std::int32_t*, const ContactTable&, Vec3*, double);
 
 }  // namespace talus

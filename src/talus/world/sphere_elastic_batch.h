@@ -24,9 +24,18 @@ struct ContactBatch {
   Vec3 torque_j(std::uint32_t k) const { return {tjx[k], tjy[k], tjz[k]}; }
 };
 
+// Which vector batch a world's sphere pairs can take: none (contact by contact), the linear
+// springs, or springs grown with the contact radius (Hertz, Mindlin). The batch needs one
+// normal law for every pair (linear or Hertz), and one clamp, dashpot scaling and tangential
+// stiffness law, which it then reads from any pair.
+enum class BatchLaw : std::uint8_t { none, linear, grown };
+BatchLaw batch_law(const ContactTable& table);
+
 // The elastic-spring law without rolling resistance on every contact of `batch` (pairs whose
 // centres are closer than r_i + r_j): fills its results and advances each contact's spring
-// (Weinhart et al. 2012, Eqs. 3, 7, 9 and Alg. 2; contact_law.h has the scalar form).
+// (Weinhart et al. 2012, Eqs. 3, 7, 9 and Alg. 2; contact_law.h has the scalar form). kGrown:
+// the coefficients grow with the contact radius (BatchLaw::grown).
+template <bool kGrown>
 void sphere_elastic_batch(ContactBatch& batch, const Vec3* __restrict position, const Vec3* __restrict velocity,
                           const Vec3* __restrict spin, const double* __restrict radius,
                           const double* __restrict inv_mass,

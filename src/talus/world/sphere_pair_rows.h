@@ -44,12 +44,14 @@ struct SpherePairArrays {
 // Forces of the pairs listed in rows [first, last), added to both particles of each pair in
 // entry order (whatever the batches, so any split of the rows gives the same sums). The kept
 // memories are compile-time flags, so the loops carry no null tests.
-template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
+template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling, BatchLaw kBatch = BatchLaw::none>
 [[gnu::noinline]] void sphere_pair_rows(const SpherePairArrays& a, const ContactTable& table, double memory_dt,
                                         std::uint32_t first, std::uint32_t last) {
   // The vector path covers the law of the periodic chute (Weinhart et al. 2012): elastic
-  // spring, no rolling resistance. Every other law runs contact by contact.
-  constexpr bool kVector = Model == TangentialModel::elastic_spring && kSpring && !kNormal && !kRolling;
+  // spring, no rolling resistance, with linear or Hertz-Mindlin springs. Every other law runs
+  // contact by contact.
+  constexpr bool kVector = kBatch != BatchLaw::none;
+  static_assert(!kVector || (Model == TangentialModel::elastic_spring && kSpring && !kNormal && !kRolling));
   constexpr std::uint32_t kSpringRowsAhead = 8;
   ContactBatch batch;
 
@@ -57,7 +59,7 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
   const auto flush = [&](std::uint32_t& n) {
     batch.count = n;
     if constexpr (kVector) {
-      sphere_elastic_batch(batch, a.position, a.velocity, a.spin, a.radius, a.inv_mass, a.species, table, a.spring, memory_dt);
+      sphere_elastic_batch<kBatch == BatchLaw::grown>(batch, a.position, a.velocity, a.spin, a.radius, a.inv_mass, a.species, table, a.spring, memory_dt);
       for (std::uint32_t k = 0; k < batch.count; ++k) {
         const std::uint32_t i = batch.i[k], j = batch.j[k];
         a.force[i] += batch.force_on_i(k);
@@ -179,11 +181,20 @@ template <TangentialModel Model, bool kSpring, bool kNormal, bool kRolling>
   if (count) flush(count);
 }
 
-// The instance of sphere_pair_rows for the memories `memory` keeps.
+// The instance of sphere_pair_rows for the memories `memory` keeps and the law of `table`.
 template <TangentialModel Model>
-auto with_memory_flags(const ContactMemory& memory) {
+auto with_memory_flags(const ContactMemory& memory, const ContactTable& table) {
   using Rows = void (*)(const SpherePairArrays&, const ContactTable&, double, std::uint32_t, std::uint32_t);
   const bool spring = !memory.spring.empty(), normal = !memory.normal_prev.empty(), rolling = !memory.rolling.empty();
+  if constexpr (Model == TangentialModel::elastic_spring) {
+    if (spring && !normal && !rolling) {
+      switch (batch_law(table)) {
+        case BatchLaw::linear: return Rows{sphere_pair_rows<Model, true, false, false, BatchLaw::linear>};
+        case BatchLaw::grown: return Rows{sphere_pair_rows<Model, true, false, false, BatchLaw::grown>};
+        case BatchLaw::none: break;
+      }
+    }
+  }
   if (rolling) return normal ? Rows{sphere_pair_rows<Model, true, true, true>} : Rows{sphere_pair_rows<Model, false, false, true>};
   if (normal) return spring ? Rows{sphere_pair_rows<Model, true, true, false>} : Rows{sphere_pair_rows<Model, false, true, false>};
   return spring ? Rows{sphere_pair_rows<Model, true, false, false>} : Rows{sphere_pair_rows<Model, false, false, false>};
