@@ -1,5 +1,6 @@
 #include "talus/scenario/contact_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -310,9 +311,21 @@ ContactParams read_contact(const io::ScenarioFile& f, const std::vector<std::str
 }
 
 double contact_duration(const ContactParams& c, double reduced_mass, double reduced_radius) {
-  if (c.normal_law == normal_law_index<LinearNormal>())
-    return params::collision_time(c.normal_stiffness, c.normal_damping.at(reduced_mass), reduced_mass);
-  return params::head_on_impact(c, reduced_mass, reduced_radius, c.impact_speed, c.clamp != NormalClamp::free).duration;
+  if (c.normal_law == normal_law_index<LinearNormal>()) {
+    const double eta = c.normal_damping.at(reduced_mass);
+    if (eta < 2 * std::sqrt(c.normal_stiffness * reduced_mass))
+      return params::collision_time(c.normal_stiffness, eta, reduced_mass);
+    // Past critical damping (a clamped contact solved for e_n < exp(-2)) the undamped
+    // oscillator's half period bounds the time scale.
+    return std::numbers::pi * std::sqrt(reduced_mass / c.normal_stiffness);
+  }
+  // The damped impact at impact_speed; a dashpot so strong that the pair creeps apart would give
+  // no time scale, so the elastic impact (the shorter) bounds it.
+  ContactParams elastic = c;
+  elastic.normal_damping = {};
+  const double undamped = params::head_on_impact(elastic, reduced_mass, reduced_radius, c.impact_speed, true).duration;
+  const double damped = params::head_on_impact(c, reduced_mass, reduced_radius, c.impact_speed, c.clamp != NormalClamp::free).duration;
+  return std::min(damped, undamped);
 }
 
 }  // namespace talus
