@@ -56,6 +56,10 @@ std::string scenario_body(const std::string& toml) {
   return toml.substr(pos);
 }
 
+// Exit statuses: 0 a run that ended as planned, 1 an error, 2 bad input, 3 a run stopped by the
+// blow-up guard (scenario/blowup_guard.h), 130 a run stopped by Ctrl-C or SIGTERM.
+constexpr int kBlowUpStatus = 3;
+
 // The results folder a checkpoint belongs to (DIR of DIR/checkpoints/NAME.h5), or empty.
 std::filesystem::path results_dir_of(const std::filesystem::path& checkpoint) {
   const std::filesystem::path parent = checkpoint.parent_path();
@@ -92,6 +96,10 @@ int run_file(io::ScenarioFile& file, const std::string& label, std::string out, 
   options.checkpoint_interval = run_start.checkpoint_interval;
   install_stop_handlers();
   const RunOutcome outcome = run_scenario(scenario, options);
+  if (outcome.stop_reason == "blow_up") {  // said even with --quiet: the run failed
+    std::fprintf(stderr, "talus: error: %s; state in %s\n", outcome.error.c_str(), outcome.state_file.c_str());
+    return kBlowUpStatus;
+  }
   if (!quiet)
     std::fprintf(stderr, "talus: %s after %.1f s of wall time (%s); results in %s\n", outcome.stop_reason.c_str(),
                  outcome.wall_seconds, label.c_str(), out.c_str());

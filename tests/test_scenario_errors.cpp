@@ -121,6 +121,21 @@ TEST(ScenarioErrors, BoxHasSixInwardUnitWalls) {
   }
 }
 
+TEST(ScenarioErrors, OnLeaveIsErrorOrDelete) {
+  const std::string bad = load_error(replace(kValid, "hi = [1.0, 1.0, 1.0]\n", "hi = [1.0, 1.0, 1.0]\non_leave = \"vanish\"\n"));
+  EXPECT_EQ(bad.rfind("case.toml:8: domain.on_leave: must be one of \"error\", \"delete\", got \"vanish\"", 0), 0u) << bad;
+  const std::string misspelt = load_error(replace(kValid, "hi = [1.0, 1.0, 1.0]\n", "hi = [1.0, 1.0, 1.0]\non_leaves = \"delete\"\n"));
+  EXPECT_NE(misspelt.find("case.toml:8: domain.on_leaves: unknown key (did you mean domain.on_leave?)"), std::string::npos)
+      << misspelt;
+  EXPECT_EQ(load_error(kValid, {"domain.on_leave=error"}), "");
+  io::ScenarioFile f = io::ScenarioFile::from_string(kValid, "case.toml");
+  EXPECT_EQ(load_scenario(f).control.on_leave, LeavePolicy::error);  // the default
+  f.set_override("domain.on_leave=delete");
+  EXPECT_EQ(load_scenario(f).control.on_leave, LeavePolicy::remove);
+  const std::string typed = load_error(kValid, {"domain.on_leave=1"});
+  EXPECT_EQ(typed.rfind("--set domain.on_leave:", 0), 0u) << typed;
+}
+
 TEST(ScenarioErrors, OverrideAppliesToTheRun) {
   io::ScenarioFile f = io::ScenarioFile::from_string(kValid, "case.toml");
   f.set_override("run.end_time=0.5");

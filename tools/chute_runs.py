@@ -52,7 +52,9 @@ class Runner:
         if case not in self.done and os.path.exists(path):
             with open(path) as f:
                 s = json.load(f)
-            if s.get("stop_reason") != "interrupted":
+            # An interrupted run goes on; a blown-up one (exit status 3) is run again, so that it
+            # fails loudly instead of entering the results as a flow state.
+            if s.get("stop_reason") not in ("interrupted", "blow_up"):
                 self.done[case] = s
         return self.done.get(case)
 

@@ -88,11 +88,17 @@ RUN_COLUMNS = ["L0", "H0", "aspect_ratio", "runout", "final_height", "dam_break.
                "repose_angle_left", "repose_angle_right", "wall_seconds"]
 
 
-def seed_folders(folder: Path):
-    """{seed: path} of the finished runs (those with a summary.json) in `folder`."""
+def blown_up(run: Path) -> bool:
+    """A run the blow-up guard stopped (exit status 3): its summary measures no collapse."""
+    return json.loads((run / "summary.json").read_text()).get("stop_reason") == "blow_up"
+
+
+def seed_folders(folder: Path, blown=False):
+    """{seed: path} of the finished runs (those with a summary.json) in `folder`, without the
+    runs that blew up; with blown=True, only those."""
     runs = {}
     for d in folder.glob("seed_*"):
-        if (d / "summary.json").exists() and d.name[5:].isdigit():
+        if (d / "summary.json").exists() and d.name[5:].isdigit() and blown_up(d) == blown:
             runs[int(d.name[5:])] = d
     return dict(sorted(runs.items()))
 
@@ -107,6 +113,10 @@ def write_ensemble(folder: Path, meta: dict | None = None) -> dict:
     if not meta and old.exists():  # keep what the run command recorded (case, overrides)
         record.update({k: v for k, v in json.loads(old.read_text()).items() if k in ("case", "overrides")})
     record.update(aggregate(summaries))
+    failed = seed_folders(folder, blown=True)
+    if failed:
+        record["blown_up_seeds"] = sorted(failed)
+        print(f"ensemble: left out seeds {sorted(failed)}: their runs blew up (see their summary.json)", file=sys.stderr)
     write_atomic(folder / "ensemble.json", json.dumps(record, indent=2) + "\n")
     lines = ["measurement,n,mean,std,min,max"]
     for key, s in record["measurements"].items():

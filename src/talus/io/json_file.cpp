@@ -1,5 +1,6 @@
 #include "talus/io/json_file.h"
 
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
@@ -11,6 +12,18 @@ void write_json(const std::filesystem::path& path, const nlohmann::json& value, 
   std::string text = value.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
   text += '\n';
   atomic_write(path, text);
+}
+
+nlohmann::json non_finite_as_text(nlohmann::json value) {
+  if (value.is_structured()) {
+    for (auto& item : value) item = non_finite_as_text(std::move(item));
+    return value;
+  }
+  if (!value.is_number_float()) return value;
+  const double v = value.get<double>();
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return value;
 }
 
 nlohmann::json read_json(const std::filesystem::path& path) {

@@ -15,6 +15,10 @@ void write_json(const std::filesystem::path& path, const nlohmann::json& value, 
 // Throws std::runtime_error naming the file when it cannot be read or is not JSON.
 nlohmann::json read_json(const std::filesystem::path& path);
 
+// `value` with every NaN and infinity replaced by the string "nan", "inf" or "-inf": for records
+// of a state that blew up, where a null would read as "not measured".
+nlohmann::json non_finite_as_text(nlohmann::json value);
+
 // A time that may be "never" (+inf), which JSON cannot hold: written as null, read back as +inf.
 inline nlohmann::json time_or_null(double t) { return std::isfinite(t) ? nlohmann::json(t) : nlohmann::json(); }
 inline double null_or_time(const nlohmann::json& j) {

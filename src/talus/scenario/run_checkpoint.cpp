@@ -24,6 +24,7 @@ io::Checkpoint capture_checkpoint(Scenario& sc, const LoopState& loop, const std
            {"vtk_times", loop.vtk_times},
            {"next_snapshot", loop.next_snapshot},
            {"snapshots", loop.snapshots},
+           {"particles_left_domain", loop.particles_left_domain},
            {"pours", pours},
            {"observers", observers}};
   return c;
@@ -61,6 +62,7 @@ LoopState restore_checkpoint(Scenario& sc, const io::Checkpoint& c, const std::s
     loop.next_snapshot = c.run.value("next_snapshot", 0.0);
     loop.snapshots = c.run.value("snapshots", std::size_t{0});
     loop.rows = c.timeseries;
+    loop.particles_left_domain = c.run.value("particles_left_domain", std::uint64_t{0});  // absent before the guard
     return loop;
   } catch (const io::InputError&) {
     throw;

@@ -20,6 +20,7 @@ struct LoopState {
   double next_snapshot = 0;       ///< s, time of the next snapshot file
   std::size_t snapshots = 0;      ///< snapshot files written
   std::vector<double> rows;       ///< time-series rows written, row-major
+  std::uint64_t particles_left_domain = 0;  ///< removed by domain.on_leave = "delete" (BlowUpGuard)
 };
 
 // The run's state now. The World may be prepared first (see World::capture_state).

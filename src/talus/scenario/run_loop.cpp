@@ -17,6 +17,7 @@
 #include "talus/io/results_dir.h"
 #include "talus/io/snapshot_file.h"
 #include "talus/io/vtk_output.h"
+#include "talus/scenario/blowup_guard.h"
 #include "talus/scenario/checkpoint_series.h"
 #include "talus/scenario/run_checkpoint.h"
 
@@ -29,7 +30,7 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 volatile std::sig_atomic_t g_stop_requested = 0;
 extern "C" void request_stop(int) { g_stop_requested = 1; }
 
-std::vector<std::string> timeseries_columns(const World& world) {
+std::vector<std::string> timeseries_columns(const World& world, LeavePolicy on_leave) {
   std::vector<std::string> c = {"time", "step", "kinetic_translational", "kinetic_rotational", "elastic_normal",
                                 "elastic_tangential", "elastic_rolling", "gravitational", "kinetic_over_elastic",
                                 "contacts", "wall_contacts", "max_overlap_ratio", "max_speed", "mean_speed",
@@ -39,6 +40,7 @@ std::vector<std::string> timeseries_columns(const World& world) {
     c.push_back("force_" + w.name + "_y");
     c.push_back("force_" + w.name + "_z");
   }
+  if (on_leave == LeavePolicy::remove) c.push_back("particles_left_domain");  // removed so far
   return c;
 }
 
@@ -104,15 +106,19 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   io::atomic_write(opt.out / "scenario.toml", opt.scenario_toml);
   World& world = *sc.world;
   const RunControl& run = sc.control;
-  const std::vector<std::string> columns = timeseries_columns(world);
+  const std::vector<std::string> columns = timeseries_columns(world, run.on_leave);
   io::CsvWriter csv(opt.out / "timeseries.csv", columns);
   Progress progress(opt.quiet);
   const auto start = std::chrono::steady_clock::now();
 
-  RunOutcome outcome{"end_time", 0};
+  RunOutcome outcome;
+  outcome.stop_reason = "end_time";
   LoopState loop;  // everything of the loop a checkpoint carries
+  BlowUpGuard guard(run.on_leave);
+  std::optional<BlowUp> blow_up;
   auto record_row = [&](const Diagnostics& d) {
-    const std::vector<double> row = row_values(world, d);
+    std::vector<double> row = row_values(world, d);
+    if (run.on_leave == LeavePolicy::remove) row.push_back(static_cast<double>(guard.removed()));
     csv.row(std::span<const double>(row));
     loop.rows.insert(loop.rows.end(), row.begin(), row.end());
   };
@@ -138,22 +144,25 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   double checkpoint_seconds = 0;
   auto write_checkpoint = [&] {
     const auto t0 = std::chrono::steady_clock::now();
+    loop.particles_left_domain = guard.removed();
     checkpoints.write(capture_checkpoint(sc, loop, opt.scenario_toml, columns));
     checkpoint_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
   if (opt.restart) {
     loop = restore_checkpoint(sc, *opt.restart, opt.restart_source, columns);
+    guard.set_removed(loop.particles_left_domain);
     for (std::size_t r = 0; r + columns.size() <= loop.rows.size(); r += columns.size())
       csv.row(std::span<const double>(loop.rows.data() + r, columns.size()));
     if (vtk) vtk->resume(loop.vtk_times);
     if (opt.checkpoint_interval || !std::isfinite(loop.next_checkpoint))  // a new interval starts now
       loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   } else {
-    record_row(world.diagnostics());
+    blow_up = guard.check(world);  // set up broken (say, a particle launched at 1e200 m/s): no step runs
+    if (!blow_up) record_row(world.diagnostics());
     loop.next_frame = world.time();
-    frame_due();
+    if (!blow_up) frame_due();
     loop.next_snapshot = world.time();
-    snapshot_due();
+    if (!blow_up) snapshot_due();
     loop.next_output = world.time() + run.output_interval;
     loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
@@ -176,9 +185,12 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
     }
     return steps;
   };
-  while (world.time() < run.end_time - 0.5 * dt) {
+  while (!blow_up && world.time() < run.end_time - 0.5 * dt) {
     for (Pouring& pour : sc.pours) pour.pour_due(world);
     world.run(batch_steps());
+    // Before anything reads the state: observers, outputs and checkpoints see only sound ones.
+    blow_up = guard.check(world);
+    if (blow_up) break;
     for (auto& o : sc.observers) o->after_step(world);
     if (world.time() >= loop.next_output - 0.5 * dt) {
       loop.next_output += run.output_interval;
@@ -210,9 +222,18 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   }
   progress.update(world, run.end_time, true);
   progress.finish();
-  // The final checkpoint holds the loop as it stands before the last row, so that a run
-  // restarted from it (say with a later end_time) goes on as this one would have.
-  if (checkpoints.written() == 0 || checkpoints.last_step() != world.step_count()) write_checkpoint();
+  if (blow_up) {
+    // The state goes to a snapshot file for the post-mortem, not to a checkpoint: resuming it
+    // would only blow up again, and latest.h5 keeps pointing at the last sound state.
+    outcome.stop_reason = "blow_up";
+    outcome.error = blow_up->message;
+    outcome.state_file = opt.out / kBlowUpStateFile;
+    io::write_snapshot_file(outcome.state_file, world.snapshot());
+  } else if (checkpoints.written() == 0 || checkpoints.last_step() != world.step_count()) {
+    // The final checkpoint holds the loop as it stands before the last row, so that a run
+    // restarted from it (say with a later end_time) goes on as this one would have.
+    write_checkpoint();
+  }
   const Diagnostics d = world.diagnostics();
   record_row(d);
   csv.close();
@@ -251,6 +272,14 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
     walls[world.walls()[w].name] = {f.x, f.y, f.z};
   }
   summary["wall_forces"] = walls;
+  summary["particles_left_domain"] = guard.removed();
+  if (blow_up) {
+    // No study measures a broken state; the record says what broke, and no NaN or infinity of
+    // the final energies is written as a null, which would read as "not measured".
+    summary["blow_up"] = blow_up_json(*blow_up);
+    io::write_json(opt.out / "summary.json", io::non_finite_as_text(summary));
+    return outcome;
+  }
   for (auto& o : sc.observers) o->finish(world, opt.out, summary);
   io::write_json(opt.out / "summary.json", summary);
   return outcome;

@@ -26,8 +26,10 @@ struct RunOptions {
 };
 
 struct RunOutcome {
-  std::string stop_reason;  ///< "end_time", "kinetic_energy", "interrupted"
+  std::string stop_reason;  ///< "end_time", "kinetic_energy", "interrupted", "blow_up", an observer's
   double wall_seconds = 0;
+  std::string error;                   ///< "blow_up": the one-line message (step, time, particles, quantity)
+  std::filesystem::path state_file;    ///< "blow_up": the state's snapshot file in the results folder
 };
 
 RunOutcome run_scenario(Scenario& scenario, const RunOptions& options);

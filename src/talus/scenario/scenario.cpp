@@ -223,6 +223,9 @@ Scenario load_scenario(ScenarioFile& f) {
     ws.contact_manifold = f.get_or<bool>("contact.manifold", false);
     ws.gravity = f.get_or<Vec3>("domain.gravity", Vec3{0, 0, -9.81});
   }
+  // Also for the chute and the dam break, which build their own domains (non-periodic in z, and
+  // on every axis).
+  if (f.get_choice_or("domain.on_leave", "error", {"error", "delete"}) == "delete") run.on_leave = LeavePolicy::remove;
 
   // Contact parameters for every pair of species and every wall material.
   std::vector<std::string> materials;

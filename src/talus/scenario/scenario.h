@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "talus/io/scenario_file.h"
+#include "talus/scenario/blowup_guard.h"
 #include "talus/scenario/pouring.h"
 #include "talus/scenario/run_observer.h"
 #include "talus/world/world.h"
@@ -25,6 +26,7 @@ struct RunControl {
   double checkpoint_interval = 0;            ///< s between checkpoints; 0: only the final one
   std::size_t checkpoint_keep = 3;           ///< checkpoints kept in DIR/checkpoints/
   std::uint64_t seed = 1;
+  LeavePolicy on_leave = LeavePolicy::error; ///< domain.on_leave: particles leaving a non-periodic face
 };
 
 struct Scenario {

@@ -136,9 +136,16 @@ class World {
   // Owned index of each global id (-1 if absent); valid until the next rebuild.
   std::vector<std::int32_t> index_of_gid() const;
 
-  // Drops every particle for which `remove(index)` is true.
+  // Builds the lists and computes the forces now if the set-up changed since the last step
+  // (particles added or removed, walls changed) instead of at the next step, which then finds
+  // them done: diagnostics() and snapshot() of such a World otherwise see no contacts.
+  void make_ready() {
+    if (!ready_) prepare();
+  }
+  // Drops every owned particle for which `remove(index)` is true; returns how many. The contact
+  // memories of the others survive: the next step's rebuild carries them over by global id.
   template <class Pred>
-  void remove_particles_if(Pred remove);
+  std::size_t remove_particles_if(Pred remove);
 
  private:
   void invalidate() { ready_ = false; }
@@ -226,17 +233,22 @@ class World {
 };
 
 template <class Pred>
-void World::remove_particles_if(Pred remove) {
-  particles_.drop_ghosts();
-  std::vector<std::uint32_t> keep;
+std::size_t World::remove_particles_if(Pred remove) {
+  // A permutation of all owned particles: the kept ones first, in their order, then the removed
+  // ones, which the resize drops.
+  std::vector<std::uint32_t> order, removed;
   for (std::size_t i = 0; i < particles_.owned; ++i)
-    if (!remove(i)) keep.push_back(static_cast<std::uint32_t>(i));
-  particles_.permute_owned(keep);
-  particles_.owned = keep.size();
-  particles_.resize(keep.size());
-  pairs_ = PairList{};
-  wall_pairs_ = WallContactList{};
+    (remove(i) ? removed : order).push_back(static_cast<std::uint32_t>(i));
+  if (removed.empty()) return 0;
+  const std::size_t kept = order.size();
+  order.insert(order.end(), removed.begin(), removed.end());
+  particles_.permute_owned(order);  // drops the ghosts
+  particles_.owned = kept;
+  particles_.resize(kept);
+  // The lists stay as built: rebuild() carries their memories by the global ids of that build
+  // (gid_at_build_), and the entries of removed particles find no place in the new lists.
   invalidate();
+  return removed.size();
 }
 
 }  // namespace talus
