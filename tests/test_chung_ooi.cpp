@@ -125,8 +125,8 @@ struct Impact {
   bool clamp = true;                     ///< normal_clamp
   // eta_t / eta_n of the Hertz-Mindlin contact. None by default: the tangential force is
   // Mindlin's spring alone, as in the elastic analysis (Maw et al. 1976) behind the normalised
-  // curves of tests 4-8; with it the paper's test-4 curve is matched within 1 %. (A dashpot
-  // breaks Coulomb's law in this engine: Test6SlidingWithTangentialDashpotHertzMindlin.)
+  // curves of tests 4-8; with it the paper's test-4 curve is matched within 1 %
+  // (Test6SlidingWithTangentialDashpotHertzMindlin checks Coulomb's law with a dashpot).
   double tangential_damping_ratio = 0;
   double steps_per_contact = 4000;
 };
@@ -787,15 +787,12 @@ TEST(ChungOoi, Test6SpinWallLinear) { check_test6(Model::linear); }
 // EDEM take eta_t / eta_n = sqrt(8 G* / (2 E*)), 0.9 here) at the largest spin (x = 0.18, gross
 // sliding). Coulomb's law makes the friction oppose the slip throughout and the tangential
 // impulse mu J_n (the closed form, 1e-3 as above; without the dashpot the engine is within
-// 5e-4). The engine does neither. After a truncation it stores the spring so that
-// -k_t xi - eta_t v_t is the Coulomb force: the spring takes up the dashpot's force, here 10-30
-// times mu F_n. At the next step k_t (~delta^(1/2), Mindlin) and eta_t (~delta^(1/4), Tsuji)
-// have changed by different factors, and the difference of the two large terms has either
-// sign: the friction points along the slip for ~350 of the ~4000 steps of the contact and the
-// tangential impulse falls ~14 % short (beta -0.841 against -0.816). This test fails until the
-// contact law is changed (an engine defect, reported, not fixed here: the reset is Weinhart et
-// al. 2012, Alg. 2 and Huet et al. 2021, Eq. 8, shared by both history rules and the vector
-// sphere batch).
+// 5e-4). A reset that stores the spring so that -k_t xi - eta_t v_t is the Coulomb force
+// (Weinhart et al. 2012, Alg. 2; Huet et al. 2021, Eq. 8) made the spring take up the dashpot's
+// force, here 10-30 times mu F_n; at the next step k_t (~delta^(1/2), Mindlin) and eta_t
+// (~delta^(1/4), Tsuji) had changed by different factors and their difference pointed along the
+// slip for ~350 of the ~4000 steps (beta -0.841 against -0.816). With coefficients that grow,
+// the spring alone now holds the Coulomb force (contact_law.h, sliding_dashpot).
 TEST(ChungOoi, Test6SlidingWithTangentialDashpotHertzMindlin) {
   Impact s = spin_only(Model::hertz_mindlin, kAlAlloy, 85);
   s.tangential_damping_ratio = 1;

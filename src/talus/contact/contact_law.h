@@ -97,6 +97,17 @@ struct ContactCoefficients {
   return c;
 }
 
+// The dashpot a sliding contact's spring is reset against (Huet et al. 2021, Eq. 8; Weinhart et
+// al. 2012, Alg. 2): the spring takes what the dashpot leaves of the Coulomb force. When the
+// coefficients change with the overlap (Mindlin's k_t ~ a, Tsuji's eta ~ sqrt(a)) a dashpot much
+// above the Coulomb force leaves a large spring cancelling a large dashpot, and at the next
+// step, both scaled by different factors, their difference may point along the slip. There the
+// spring alone holds the Coulomb force (Cundall and Strack 1979) and the dashpot acts on top.
+inline bool coefficients_grow(const ContactParams& p) {
+  return p.tangential_law == TangentialStiffness::mindlin || p.damping_scaling == DampingScaling::tsuji;
+}
+inline double sliding_dashpot(const ContactParams& p, double eta_t) { return coefficients_grow(p) ? 0.0 : eta_t; }
+
 // Whether the normal force is bounded at zero under tangential model `model`.
 inline bool clamps_normal(const ContactParams& p, TangentialModel model) {
   return p.clamp == NormalClamp::clamped || (p.clamp == NormalClamp::by_model && model != TangentialModel::elastic_spring);
@@ -140,7 +151,7 @@ template <TangentialModel Model>
     const double ft2 = norm2(ft);
     if (ft2 > f_max * f_max) {
       ft *= f_max / std::sqrt(ft2);                  // Eqs. (6)-(7): mu_c |F_n| u_t,cumul
-      spring = (kt > 0) ? (ft + eta_t * vt) * (-1.0 / kt) : Vec3{};  // Eq. (8), saturated branch
+      spring = (kt > 0) ? (ft + sliding_dashpot(p, eta_t) * vt) * (-1.0 / kt) : Vec3{};  // Eq. (8), saturated branch
     }
   } else if constexpr (Model == TangentialModel::elastic_spring) {
     Vec3& spring = *h.spring;
@@ -151,7 +162,7 @@ template <TangentialModel Model>
     const double ft2 = norm2(ft);
     if (ft2 > f_max * f_max) {
       ft *= f_max / std::sqrt(ft2);                  // Alg. 2: truncate to mu_c |f_n|
-      spring = (kt > 0) ? (ft + eta_t * vt) * (-1.0 / kt) : Vec3{};
+      spring = (kt > 0) ? (ft + sliding_dashpot(p, eta_t) * vt) * (-1.0 / kt) : Vec3{};
     }
   } else {
     // Huet et al. 2021, Sect. V B without memory: viscous friction capped by Coulomb.

@@ -151,6 +151,7 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
   const bool hertz = law.normal_law == normal_law_index<HertzNormal>();
   const bool tsuji = hertz && law.damping_scaling == DampingScaling::tsuji;
   const bool mindlin = law.tangential_law == TangentialStiffness::mindlin;
+  const bool reset_on_force = coefficients_grow(law);
   const double floor = clamps_normal(law, TangentialModel::elastic_spring) ? 0.0 : -std::numeric_limits<double>::infinity();
 #pragma omp simd
   for (std::uint32_t k = 0; k < lanes; ++k) {
@@ -187,7 +188,7 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
     ft *= slides ? truncation : 1.0;
     const double inv_kt = -1.0 / k_t;
     const double back = k_t > 0 ? inv_kt : 0.0;
-    const Vec3 s_slid = (ft + e_t * vt) * back;
+    const Vec3 s_slid = (ft + (reset_on_force ? 0.0 : e_t) * vt) * back;  // sliding_dashpot (contact_law.h)
     sx[k] = slides ? s_slid.x : s.x;
     sy[k] = slides ? s_slid.y : s.y;
     sz[k] = slides ? s_slid.z : s.z;
