@@ -35,6 +35,10 @@
 //    2-thread figures competed with other jobs).
 //  - threads_identical: 1 if the positions after min(N, 200) steps from the cached state on 1
 //    and on 2 threads are bitwise identical.
+//  - X_guard_over_step_1t, _2t: one scan of the blow-up guard (world/state_guard.h), which the
+//    run loop makes after every batch of at most 64 steps, over one time step, fastest of 20
+//    batches each followed by a scan (bench/guard_cost.h); a step pays at most 1/64 of it
+//    between outputs (1/25 inside the chute's averaging window, where snapshots end batches).
 //  - cg_*_over_step: coarse graining one snapshot of the chute4k state (Weinhart et al. 2012,
 //    Sect. 3; Gaussian, w = 0.25 d) on a 1D depth grid of 200 points or a 3D grid of 40 x 20 x 40,
 //    divided by the cost of one time step, both on one thread; cg_snapshot_over_step is
@@ -56,6 +60,7 @@
 #include "chute_state.h"
 #include "chute_timing.h"
 #include "cross_pile.h"
+#include "guard_cost.h"
 #include "proc_memory.h"
 
 namespace fs = std::filesystem;
@@ -333,6 +338,12 @@ int main(int argc, char** argv) {
         metric("chute32k_peak_rss", static_cast<double>(p.peak_kib) / 1024.0, "MiB");
       }
       run_case(c, o);
+      for (int threads = 1; threads <= 2; ++threads) {
+        const GuardCost g = time_state_guard(c, cache_path(o.cache, c), threads, o.quick ? 3 : 20);
+        const std::string suffix = threads == 1 ? "_1t" : "_2t";
+        metric(c.name + "_guard_over_step" + suffix, g.scan_seconds / g.step_seconds, "x");
+        metric(c.name + "_guard_us" + suffix, 1e6 * g.scan_seconds, "us");
+      }
       if (c.name == "chute4k") {  // coarse graining of the H = 20 chute against its time step, one thread
         const CgCost cg = time_chute_coarse_graining(c, cache_path(o.cache, c), o.quick ? 1 : 3);
         metric("cg_snapshot_over_step", cg.snapshot_seconds / cg.step_seconds, "x");
