@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages Talus needs; quiet and quick when all are present.
+# Installs the Debian packages Talus needs, plus any named as arguments; quiet and quick when
+# all are present.
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
@@ -9,6 +10,7 @@ packages=(
   python3 python3-numpy python3-scipy python3-matplotlib
   python3-vtk9
 )
+packages+=("$@")  # what one caller alone needs, e.g. clang for scripts/fuzz.sh
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

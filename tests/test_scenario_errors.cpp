@@ -136,6 +136,99 @@ TEST(ScenarioErrors, OnLeaveIsErrorOrDelete) {
   EXPECT_EQ(typed.rfind("--set domain.on_leave:", 0), 0u) << typed;
 }
 
+// Inputs that the fuzz target (tests/fuzz) found crashing, hanging or reaching undefined
+// behaviour; each now stops with an InputError.
+
+TEST(ScenarioErrors, NonAsciiCharacterAfterAValue) {
+  // toml++ 3.3.0 reached __builtin_unreachable on it (see src/talus/io/toml_include.h).
+  const std::string e = load_error(replace(kValid, "friction = 0.5", "friction = 0.5\u00b0"));
+  EXPECT_EQ(e.rfind("case.toml:16: ", 0), 0u) << e;
+}
+
+TEST(ScenarioErrors, MalformedTableHeader) {
+  // toml++ 3.3.0 asserted on these before reporting them.
+  std::string e = load_error(replace(kValid, "[contact]", "[[[contact]]]"));
+  EXPECT_EQ(e.rfind("case.toml:13: ", 0), 0u) << e;
+  e = load_error(replace(kValid, "[contact]", "[\fcontact]"));
+  EXPECT_EQ(e.rfind("case.toml:13: ", 0), 0u) << e;
+}
+
+TEST(ScenarioErrors, InfiniteOrNanNumber) {
+  EXPECT_EQ(load_error(replace(kValid, "lo = [-1.0, -1.0, -1.0]", "lo = [-inf, -1.0, -1.0]")),
+            "case.toml:6: domain.lo: element 0 must be finite, got -inf");
+  EXPECT_EQ(load_error(replace(kValid, "position = [0.1, 0.0, 0.0]", "position = [nan, 0.0, 0.0]")),
+            "case.toml:24: particles[1].position: element 0 must be finite, got nan");
+  EXPECT_EQ(load_error(replace(kValid, "end_time = 0.01", "end_time = inf")), "case.toml:3: run.end_time: must be finite, got inf");
+}
+
+TEST(ScenarioErrors, DomainExtentOverflows) {
+  const std::string text = replace(replace(kValid, "lo = [-1.0, -1.0, -1.0]", "lo = [-1e308, -1.0, -1.0]"),
+                                   "hi = [1.0, 1.0, 1.0]", "hi = [1e308, 1.0, 1.0]");
+  EXPECT_EQ(load_error(text), "case.toml:7: domain.hi: the extent hi - lo overflows a double");
+}
+
+TEST(ScenarioErrors, ParticleMassOutOfRange) {
+  // A mass that underflows to 0 made World::add_particle throw std::invalid_argument.
+  std::string e = load_error(replace(kValid, "radius = 0.01", "radius = 1e-300"));
+  EXPECT_EQ(e.rfind("case.toml:10: species.glass.density: gives a particle of mass 0 kg", 0), 0u) << e;
+  e = load_error(replace(kValid, "position = [0.1, 0.0, 0.0]", "position = [0.1, 0.0, 0.0]\nradius = 1e-100"));
+  EXPECT_EQ(e.rfind("case.toml:25: particles[1].radius: gives a particle of mass", 0), 0u) << e;
+}
+
+TEST(ScenarioErrors, CrossArmShorterThanItsCrust) {
+  // make_box threw std::invalid_argument: the crust was checked against the width and thickness only.
+  EXPECT_EQ(load_error(replace(kValid, "radius = 0.01", "shape = \"cross\"\nlength = 1e-5")),
+            "case.toml:9: species.glass.crust: must be smaller than half the arm length, width and thickness");
+}
+
+TEST(ScenarioErrors, OverdampedContactGetsAStableTimeStep) {
+  // params::collision_time threw std::invalid_argument while the time step was derived. Past
+  // critical damping the time scale is the dashpot's, 2 pi m_ij / eta (an explicit step must
+  // stay below 2 m_ij / eta), or the undamped half period if shorter.
+  io::ScenarioFile f = io::ScenarioFile::from_string(replace(kValid, "normal_restitution = 0.5", "normal_damping = 1e6"), "case.toml");
+  const Scenario sc = load_scenario(f);
+  const double m = 0.5 * 2500 * 4.0 / 3.0 * 3.14159265358979 * 1e-6;
+  EXPECT_NEAR(sc.derived["contact_time"].get<double>(), 2 * 3.14159265358979 * m / 1e6, 1e-3 * 2 * 3.14159265358979 * m / 1e6);
+  EXPECT_LT(sc.derived["time_step"].get<double>() * 1e6 / m, 2.0);
+}
+
+TEST(ScenarioErrors, ChuteNarrowerThanTwoDiameters) {
+  // The rough base's own World threw std::runtime_error while it settled.
+  const std::string chute = "[run]\nend_time = 1.0\n\n[chute]\nlength = 2.0\n\n[contact]\nnormal_stiffness = 2e5\n";
+  EXPECT_EQ(load_error(chute), "case.toml:5: chute.length: periodic box narrower than two particle diameters plus skin");
+}
+
+TEST(ScenarioErrors, ParticleCountAboveTheLimit) {
+  // 1e12 particles were drawn one by one until memory ran out.
+  const std::string insert =
+      "\n[[insert]]\nspecies = \"glass\"\ncount = 1e12\nregion_lo = [-0.9, -0.9, -0.9]\nregion_hi = [0.9, 0.9, 0.9]\n";
+  EXPECT_EQ(load_error(kValid + insert),
+            "case.toml:28: insert[0].count: 1000000000002 particles in all, above the limit of 100000000");
+  io::ScenarioFile f = io::ScenarioFile::from_string(kValid, "case.toml");
+  ScenarioLimits limits;
+  limits.max_particles = 1;
+  try {
+    load_scenario(f, limits);
+    ADD_FAILURE() << "no InputError";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "case.toml:18: particles: 2 particles in all, above the limit of 1");
+  }
+}
+
+TEST(ScenarioErrors, SpeciesNameNoKeyPathCanHold) {
+  // "species.glass beads.density" made the key path parser throw std::invalid_argument.
+  EXPECT_EQ(load_error(replace(kValid, "[species.glass]", "[species.\"glass beads\"]")),
+            "case.toml:9: species.\"glass beads\": a name here must not be empty nor hold spaces, '.', '[', ']' or '='");
+}
+
+TEST(ScenarioErrors, InsertionRegionFullDespiteATinyGrowth) {
+  // A growth too small to move the top of the region drew positions forever.
+  const std::string insert = "\n[[insert]]\nspecies = \"glass\"\ncount = 1000\ngrowth = 1e-300\n"
+                             "region_lo = [0.5, 0.5, 0.5]\nregion_hi = [0.6, 0.6, 0.6]\n";
+  const std::string e = load_error(kValid + insert);
+  EXPECT_EQ(e.rfind("case.toml:28: insert[0].count: insertion region full after", 0), 0u) << e;
+}
+
 TEST(ScenarioErrors, OverrideAppliesToTheRun) {
   io::ScenarioFile f = io::ScenarioFile::from_string(kValid, "case.toml");
   f.set_override("run.end_time=0.5");

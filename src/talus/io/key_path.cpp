@@ -39,6 +39,13 @@ KeyPath parse_key_path(std::string_view text) {
   }
 }
 
+bool is_key_name(std::string_view name) {
+  if (name.empty()) return false;
+  for (char c : name)
+    if (!is_name_char(c)) return false;
+  return true;
+}
+
 std::string format_key_path(const KeyPath& path, std::size_t count) {
   std::string out;
   for (std::size_t k = 0; k < count && k < path.size(); ++k) {

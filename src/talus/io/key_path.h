@@ -18,6 +18,9 @@ using KeyPath = std::vector<PathStep>;
 // Throws std::invalid_argument with a short reason ("empty key name", "bad index") on bad syntax.
 KeyPath parse_key_path(std::string_view text);
 
+// Whether `name` can be one step of a path: not empty, none of the characters above.
+bool is_key_name(std::string_view name);
+
 // The canonical text of the first `count` steps of a path ("walls[2].normal").
 std::string format_key_path(const KeyPath& path, std::size_t count);
 inline std::string format_key_path(const KeyPath& path) { return format_key_path(path, path.size()); }

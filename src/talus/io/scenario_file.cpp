@@ -132,6 +132,13 @@ std::vector<std::string> ScenarioFile::table_keys(std::string_view key) const {
   // Keys created by --set have no position (line 0) and so would sort first; put them last.
   std::vector<std::pair<const toml::key*, std::uint64_t>> keys;
   for (auto&& [k, v] : *table) {
+    if (!is_key_name(k.str())) {
+      KeyPath path = key.empty() ? KeyPath{} : parse_key_path(key);
+      const std::string shown = (key.empty() ? "" : format_key_path(path) + ".") + quote_value(k.str());
+      path.emplace_back(std::string(k.str()));
+      throw InputError(Impl::compose(impl_->where(path, path.size(), &v), shown,
+                                     "a name here must not be empty nor hold spaces, '.', '[', ']' or '='"));
+    }
     const auto& pos = k.source().begin;
     const std::uint64_t order = pos.line == 0 ? std::numeric_limits<std::uint64_t>::max()
                                               : (std::uint64_t{pos.line} << 32) | pos.column;

@@ -77,6 +77,8 @@ class ScenarioFile {
 
   // Names of the keys of a table, in file order (keys created by --set come last); empty if
   // the table is absent. "" is the top level. Marks the table itself read, not its keys.
+  // Callers build key paths from the names, so a name no path can hold (empty, or with a
+  // space, '.', '[', ']' or '=': `[species."glass beads"]`) is an InputError at its line.
   std::vector<std::string> table_keys(std::string_view key) const;
   // Number of entries of an array (of tables); 0 if absent. Marks the array itself read.
   std::size_t array_size(std::string_view key) const;

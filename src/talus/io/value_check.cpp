@@ -1,5 +1,7 @@
 #include "talus/io/value_check.h"
 
+#include <cmath>
+
 #include "talus/io/number_format.h"
 
 namespace talus::io {
@@ -15,7 +17,9 @@ std::string Check::describe() const {
 }
 
 std::optional<std::string> Check::violation(double value) const {
-  // Written so that NaN fails every check: comparisons with NaN are false.
+  // TOML spells inf and nan, but no scenario value means either: an infinite length or speed
+  // would only resurface as a NaN, or as an overflowing cast, far from its line.
+  if (!std::isfinite(value)) return "must be finite, got " + format_double(value);
   bool ok = true;
   switch (kind) {
     case Kind::None: ok = true; break;

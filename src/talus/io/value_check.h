@@ -15,7 +15,8 @@ struct Check {
 
   // "positive", "non-negative", "in [0, 1]"; empty for None.
   std::string describe() const;
-  // The complaint for `value`, e.g. "must be positive, got -3"; nothing if it passes.
+  // The complaint for `value`, e.g. "must be positive, got -3"; nothing if it passes. Every
+  // check, None included, refuses inf and nan.
   std::optional<std::string> violation(double value) const;
 };
 

@@ -57,7 +57,8 @@ BodyOverlapIndex::BodyOverlapIndex(double max_radius) : cell_(2.1 * max_radius) 
 }
 
 std::int64_t BodyOverlapIndex::key(const Vec3& x) const {
-  const auto c = [&](double v) { return static_cast<std::int64_t>(std::floor(v / cell_)) & 0x1fffff; };
+  // Bounded before the cast (the hash keeps 21 bits anyway): a far position would not fit.
+  const auto c = [&](double v) { return static_cast<std::int64_t>(std::clamp(std::floor(v / cell_), -0x1p62, 0x1p62)) & 0x1fffff; };
   return (c(x.x) << 42) | (c(x.y) << 21) | c(x.z);
 }
 
@@ -81,11 +82,11 @@ void BodyOverlapIndex::insert(const PlacedBody& body) {
 
 std::vector<PlacedBody> insert_bodies_growing(BodyOverlapIndex& index, const PlacedBody& prototype, std::size_t count,
                                               const Vec3& lo, const Vec3& size, double growth, double clearance,
-                                              std::mt19937_64& rng, double max_top) {
+                                              std::mt19937_64& rng, double max_top, std::size_t max_attempts) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<PlacedBody> placed;
   double top = size.z;
-  std::size_t misfits = 0;
+  std::size_t misfits = 0, rejections = 0;
   while (placed.size() < count) {
     PlacedBody b = prototype;
     b.orientation = prototype.shape ? random_orientation(rng) : Quat{};
@@ -100,11 +101,13 @@ std::vector<PlacedBody> insert_bodies_growing(BodyOverlapIndex& index, const Pla
     }
     if (index.overlaps(b, clearance)) {
       top += growth;
-      if (top > max_top)
+      // Counted in a row whatever the growth: one too small to move the top never reaches max_top.
+      if (top > max_top || ++rejections > max_attempts)
         throw std::runtime_error("insertion region full after " + std::to_string(placed.size()) + " of " +
                                  std::to_string(count) + " particles");
       continue;
     }
+    rejections = 0;
     index.insert(b);
     placed.push_back(b);
   }

@@ -44,9 +44,10 @@ class BodyOverlapIndex {
 // Weinhart et al. 2012, Sect. 5, for bodies of any shape: copies of `prototype` at uniform
 // random positions and orientations whose whole shape lies in [lo, lo + (size.x, size.y, I)],
 // I starting at size.z and growing by `growth` at each rejection for overlap. Returns the
-// placed bodies; throws std::runtime_error when I would pass max_top.
+// placed bodies; throws std::runtime_error when I would pass max_top, or after `max_attempts`
+// rejections in a row.
 std::vector<PlacedBody> insert_bodies_growing(BodyOverlapIndex& index, const PlacedBody& prototype, std::size_t count,
                                               const Vec3& lo, const Vec3& size, double growth, double clearance,
-                                              std::mt19937_64& rng, double max_top);
+                                              std::mt19937_64& rng, double max_top, std::size_t max_attempts = 100000);
 
 }  // namespace talus

@@ -19,6 +19,11 @@ ContactParams weinhart_chute_contact() {
   return c;
 }
 
+double rough_base_settled_count(double length, double width, double lambda) {
+  // About 12 layers at a settled volume fraction near 0.6.
+  return 0.6 * length * width * 12 * lambda / (std::numbers::pi / 6 * lambda * lambda * lambda);
+}
+
 std::vector<Vec3> make_rough_base(double length, double width, double lambda, std::uint64_t seed) {
   if (lambda <= 0) return {};
   const double density = 6 / std::numbers::pi / (lambda * lambda * lambda) * lambda * lambda * lambda;
@@ -53,9 +58,7 @@ std::vector<Vec3> make_rough_base(double length, double width, double lambda, st
   bottom.normal = {0, 0, 1};
   world.add_wall(bottom);
 
-  // About 12 layers at a settled volume fraction near 0.6.
-  const std::size_t count =
-      static_cast<std::size_t>(std::llround(0.6 * length * width * 12 * lambda / (std::numbers::pi / 6 * lambda * lambda * lambda)));
+  const std::size_t count = static_cast<std::size_t>(std::llround(rough_base_settled_count(length, width, lambda)));
   std::mt19937_64 rng(seed);
   SphereOverlapIndex index(ws.domain.lo, {length, width, 200 * lambda}, ws.domain.periodic, lambda);
   insert_growing(index, count, {0, 0, 0.5 * lambda}, {length, width, 24 * lambda}, 0.01 * lambda,
@@ -77,8 +80,10 @@ std::vector<Vec3> make_rough_base(double length, double width, double lambda, st
   return base;
 }
 
+double chute_particle_count_exact(const ChuteSetup& s) { return 200 * s.fill_height * s.length * s.width / 200.0; }
+
 std::size_t chute_particle_count(const ChuteSetup& s) {
-  return static_cast<std::size_t>(std::llround(200 * s.fill_height * s.length * s.width / 200.0));
+  return static_cast<std::size_t>(std::llround(chute_particle_count_exact(s)));
 }
 
 std::unique_ptr<World> make_chute_world(const ChuteSetup& s) {

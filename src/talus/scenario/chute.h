@@ -33,8 +33,14 @@ ContactParams weinhart_chute_contact();
 // particles with z in [9.3, 11] lambda and move them down by 11 lambda.
 std::vector<Vec3> make_rough_base(double length, double width, double lambda, std::uint64_t seed);
 
+// Spheres make_rough_base settles, before it keeps a slice of them (a double: the scenario
+// reader compares it with its particle limit before anything is built).
+double rough_base_settled_count(double length, double width, double lambda);
+
 // Number of flowing particles for filling height H: 200 H per 20 x 10 of area, rounded.
 std::size_t chute_particle_count(const ChuteSetup& s);
+// The same unrounded, for the reader's particle limit.
+double chute_particle_count_exact(const ChuteSetup& s);
 
 // The chute's World without particles: periodic box, tilted gravity, time step, contact table
 // (species 0 flowing, 1 base), and a flat floor when lambda = 0.

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "talus/io/number_format.h"
 #include "talus/scenario/chute_study.h"
 
 namespace talus {
@@ -40,8 +41,13 @@ ChuteStudyConfig read_chute_study(const io::ScenarioFile& f, double contact_time
   c.z_max = f.get_or<double>(cg + "z_max", 1.2 * fill_height + 5);
   if (c.coarse_grain && c.z_max <= c.z_min) f.fail(cg + "z_max", "must be above chute.coarse_graining.z_min");
   // Four points per width resolve the Gaussian and keep the balance's finite differences accurate.
-  const int fine = static_cast<int>(std::ceil((c.z_max - c.z_min) / (0.25 * c.width))) + 1;
-  c.points = f.get_or<int>(cg + "points", std::max(fine, 3), io::in_range(3, 1e6));
+  const double fine = std::ceil((c.z_max - c.z_min) / (0.25 * c.width)) + 1;
+  // Compared as a double: the count may not fit an int (z_max = 1e300).
+  if (c.coarse_grain && !f.has(cg + "points") && !(fine <= 1e6))
+    f.fail(cg + "z_max", "the profile from z_min to z_max would need " + io::format_double(fine) +
+                             " points, a quarter width apart (at most 1e6): give chute.coarse_graining.points");
+  const int fallback = fine <= 1e6 ? static_cast<int>(std::max(fine, 3.0)) : 1000000;  // unused without coarse graining
+  c.points = f.get_or<int>(cg + "points", fallback, io::in_range(3, 1e6));
   return c;
 }
 

@@ -315,9 +315,11 @@ double contact_duration(const ContactParams& c, double reduced_mass, double redu
     const double eta = c.normal_damping.at(reduced_mass);
     if (eta < 2 * std::sqrt(c.normal_stiffness * reduced_mass))
       return params::collision_time(c.normal_stiffness, eta, reduced_mass);
-    // Past critical damping (a clamped contact solved for e_n < exp(-2)) the undamped
-    // oscillator's half period bounds the time scale.
-    return std::numbers::pi * std::sqrt(reduced_mass / c.normal_stiffness);
+    // Past critical damping (a clamped contact solved for e_n < exp(-2), or a dashpot given) the
+    // time scale is the dashpot's, 2 pi m / eta (an explicit step must stay below 2 m / eta), or
+    // the undamped half period if shorter.
+    return std::min(std::numbers::pi * std::sqrt(reduced_mass / c.normal_stiffness),
+                    2 * std::numbers::pi * reduced_mass / eta);
   }
   // The damped impact at impact_speed; a dashpot so strong that the pair creeps apart would give
   // no time scale, so the elastic impact (the shorter) bounds it.

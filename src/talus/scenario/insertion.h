@@ -25,6 +25,7 @@ class SphereOverlapIndex {
 
  private:
   long key(int a, int b, int c) const;
+  bool touches(const PlacedSphere& s, std::uint32_t id) const;  ///< overlap with sphere `id`, periodic images included
   int cell_index(double x, int axis) const;
   Vec3 lo_, hi_;
   bool periodic_[3];
@@ -38,7 +39,7 @@ class SphereOverlapIndex {
 // Weinhart et al. 2012, Sect. 5: place `count` spheres at uniform random positions in the box
 // [lo, lo + (size.x, size.y, I)] starting with I = size.z; each rejected (overlapping) attempt
 // raises the top I by `growth`. Returns the final I. Throws std::runtime_error when I would
-// exceed `max_top`, or after `max_attempts` rejections in a row when growth is zero.
+// exceed `max_top`, or after `max_attempts` rejections in a row.
 double insert_growing(SphereOverlapIndex& index, std::size_t count, const Vec3& lo, const Vec3& size,
                       double growth, const std::function<double(std::mt19937_64&)>& radius, std::mt19937_64& rng,
                       double max_top = 1e300, std::size_t max_attempts = 100000);

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "talus/contact/parameter_procedure.h"
+#include "talus/io/number_format.h"
 #include "talus/math/random_orientation.h"
 #include "talus/scenario/chute.h"
 #include "talus/scenario/chute_study.h"
@@ -14,6 +15,7 @@
 #include "talus/scenario/dam_break_observer.h"
 #include "talus/scenario/hopper_observer.h"
 #include "talus/scenario/insertion.h"
+#include "talus/scenario/particle_budget.h"
 #include "talus/scenario/rigid_body_type.h"
 #include "talus/shape/convex_shape.h"
 
@@ -67,21 +69,64 @@ void read_shape(const ScenarioFile& f, const std::string& key, SpeciesInfo& s) {
     const double width = f.get_or<double>(key + ".width", 2e-3, io::positive);
     const double thickness = f.get_or<double>(key + ".thickness", 3e-3, io::positive);
     const double crust = f.get_or<double>(key + ".crust", 0.05 * std::min(width, thickness), io::non_negative);
-    if (crust >= 0.5 * std::min(width, thickness)) f.fail(key + ".crust", "must be smaller than half the arm width and thickness");
+    if (crust >= 0.5 * std::min({length, width, thickness}))
+      f.fail(key + ".crust", "must be smaller than half the arm length, width and thickness");
     c = make_huet_cross(length, width, thickness, crust);
   }
   s.body = make_rigid_body_type(c, s.density);
   s.radius = s.body->radius;
 }
 
+// A density or size at the ends of the double range gives a mass or moment of inertia of 0,
+// inf or nan, which the World refuses, or one whose square (in a reduced mass m_i m_j / (m_i +
+// m_j)) is; no grain comes near these bounds. Reported with the key that gave the particle.
+void check_mass(const ScenarioFile& f, const std::string& key, const SpeciesInfo& s, double r = 0) {
+  const ParticleInit p = s.particle({}, {}, 0, r);
+  for (double v : {p.mass, p.inertia.x, p.inertia.y, p.inertia.z})
+    if (!(v >= 1e-150 && v <= 1e150))
+      f.fail(key, "gives a particle of mass " + io::format_double(p.mass) + " kg and moments of inertia " +
+                      io::format_double(p.inertia.x) + ", " + io::format_double(p.inertia.y) + ", " +
+                      io::format_double(p.inertia.z) + " kg m^2: they must lie in [1e-150, 1e150]");
+}
+
 std::string indexed(const std::string& array, std::size_t k) { return array + "[" + std::to_string(k) + "]"; }
+
+// The first of `names` in the first of `tables` holding it (the key read_contact took it from),
+// else the first table: for messages.
+std::string given_key(const ScenarioFile& f, const std::vector<std::string>& tables, const std::vector<std::string>& names) {
+  for (const std::string& name : names)
+    for (const std::string& t : tables)
+      if (f.has(t + "." + name)) return t + "." + name;
+  return tables.front();
+}
+
+// read_contact, plus the check the time step needs: a contact time, positive and finite.
+// `between` names the two sides.
+ContactParams read_timed_contact(const ScenarioFile& f, const std::vector<std::string>& tables, const ContactContext& ctx,
+                                 const std::string& between) {
+  const ContactParams c = read_contact(f, tables, ctx);
+  const double m = ctx.reduced_mass;
+  // A stiffness from max_overlap and impact_speed (Eq. 16) can overflow, or vanish.
+  if (!(c.normal_stiffness > 0) || !std::isfinite(c.normal_stiffness))
+    f.fail(given_key(f, tables, {"normal_stiffness", "max_overlap", "youngs_modulus"}),
+           "gives the contact between " + between + " a stiffness of " + io::format_double(c.normal_stiffness));
+  const double t = contact_duration(c, m, ctx.reduced_radius());
+  if (!(t > 0) || !std::isfinite(t))
+    f.fail(given_key(f, tables, {"normal_stiffness", "max_overlap", "youngs_modulus"}),
+           "gives the contact between " + between + " no positive contact time (stiffness " +
+               io::format_double(c.normal_stiffness) + ")");
+  return c;
+}
 
 Domain read_domain(const ScenarioFile& f) {
   Domain d;
   d.lo = f.get<Vec3>("domain.lo");
   d.hi = f.get<Vec3>("domain.hi");
-  for (int a = 0; a < 3; ++a)
+  for (int a = 0; a < 3; ++a) {
     if (!(d.hi[a] > d.lo[a])) f.fail("domain.hi", "must exceed domain.lo on every axis");
+    // Finite ends, yet hi - lo may not be: every cell grid over the domain divides by it.
+    if (!std::isfinite(d.length(a))) f.fail("domain.hi", "the extent hi - lo overflows a double");
+  }
   const std::string periodic = f.get_or<std::string>("domain.periodic", "");
   for (char c : periodic) {
     if (c < 'x' || c > 'z') f.fail("domain.periodic", "expected a subset of \"xyz\", got \"" + periodic + "\"");
@@ -160,8 +205,9 @@ void read_walls(const ScenarioFile& f, World& world, std::vector<std::string>& m
 
 }  // namespace
 
-Scenario load_scenario(ScenarioFile& f) {
+Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
   Scenario sc;
+  ParticleBudget budget(f, limits.max_particles);
   RunControl& run = sc.control;
   run.end_time = f.get<double>("run.end_time", io::positive);
   run.output_interval = f.get_or<double>("run.output_interval", run.end_time / 100, io::positive);
@@ -190,6 +236,7 @@ Scenario load_scenario(ScenarioFile& f) {
     s.name = name;
     s.density = f.get<double>(key + ".density", io::positive);
     read_shape(f, key, s);
+    check_mass(f, key + ".density", s);
     species.push_back(s);
   }
   if (species.empty()) f.fail("species", "define at least one species, e.g. [species.glass] density = 2500, radius = 0.001");
@@ -211,12 +258,22 @@ Scenario load_scenario(ScenarioFile& f) {
     chute_setup.angle_deg = f.get_or<double>("chute.angle", 24, io::in_range(0, 89));
     chute_setup.seed = run.seed;
     chute_setup.model = ws.tangential_model;
+    // Checked before the rough base settles in a box of the same size (make_rough_base), whose
+    // World would refuse it: the periodic box must hold two interaction ranges.
+    const double widest = std::max(chute_setup.diameter, chute_setup.base_diameter);
+    if (chute_setup.length < 2.3 * widest) f.fail("chute.length", "periodic box narrower than two particle diameters plus skin");
+    if (chute_setup.width < 2.3 * widest) f.fail("chute.width", "periodic box narrower than two particle diameters plus skin");
+    budget.add("chute.fill_height", chute_particle_count_exact(chute_setup));
+    if (chute_setup.base_diameter > 0)
+      budget.add("chute.base_diameter",
+                 rough_base_settled_count(chute_setup.length, chute_setup.width, chute_setup.base_diameter));
   }
   const bool dam_break = f.has("dam_break");
   DamBreakSetup dam;
   if (dam_break) {
     if (chute) f.fail("dam_break", "a scenario is either a chute or a dam break");
     dam = read_dam_break(f);
+    budget.add("dam_break.count", static_cast<double>(dam.count));
   }
   if (!chute) {
     ws.domain = dam_break ? dam_break_domain(dam) : read_domain(f);
@@ -252,13 +309,16 @@ Scenario load_scenario(ScenarioFile& f) {
       ContactContext ctx{species[a].mass() * species[b].mass() / (species[a].mass() + species[b].mass()),
                          species[a].radius, species[a].inertia(), species[b].radius, species[b].inertia(),
                          ws.tangential_model, false, species[a].body || species[b].body};
-      table.set_pair(static_cast<int>(a), static_cast<int>(b), read_contact(f, tables, ctx));
+      table.set_pair(static_cast<int>(a), static_cast<int>(b),
+                     read_timed_contact(f, tables, ctx, "species \"" + species[a].name + "\" and \"" + species[b].name + "\""));
     }
   for (std::size_t a = 0; a < species.size(); ++a)
     for (std::size_t m = 0; m < materials.size(); ++m) {
       ContactContext ctx{species[a].mass(), species[a].radius, species[a].inertia(), 0, 0, ws.tangential_model, true,
                          species[a].body.has_value()};
-      table.set_wall(static_cast<int>(a), static_cast<int>(m), read_contact(f, {"contact.wall", "contact"}, ctx));
+      table.set_wall(static_cast<int>(a), static_cast<int>(m),
+                     read_timed_contact(f, {"contact.wall", "contact"}, ctx,
+                                        "species \"" + species[a].name + "\" and wall material \"" + materials[m] + "\""));
     }
 
   // Time step: given, or t_c / steps_per_contact; never above t_c / 10.
@@ -310,6 +370,7 @@ Scenario load_scenario(ScenarioFile& f) {
     return true;
   };
   const std::size_t explicit_count = f.array_size("particles");
+  budget.add("particles", static_cast<double>(explicit_count));
   for (std::size_t k = 0; k < explicit_count; ++k) {
     const std::string key = indexed("particles", k);
     const int s = species_index(key + ".species");
@@ -323,6 +384,7 @@ Scenario load_scenario(ScenarioFile& f) {
       q = Quat{v[0], v[1], v[2], v[3]}.normalized();
     }
     const double radius = species[s].body ? 0.0 : f.get_or<double>(key + ".radius", species[s].radius, io::positive);
+    check_mass(f, key + ".radius", species[s], radius);
     ParticleInit p = species[s].particle(position, q, s, radius);
     p.velocity = f.get_or<Vec3>(key + ".velocity", Vec3{});
     p.angular_velocity = f.get_or<Vec3>(key + ".angular_velocity", Vec3{});
@@ -337,6 +399,7 @@ Scenario load_scenario(ScenarioFile& f) {
     const std::string key = indexed("insert", k);
     const int s = species_index(key + ".species");
     const auto count = static_cast<std::size_t>(f.get<std::int64_t>(key + ".count", io::non_negative));
+    budget.add(key + ".count", static_cast<double>(count));
     const Vec3 lo = f.get<Vec3>(key + ".region_lo"), hi = f.get<Vec3>(key + ".region_hi");
     for (int a = 0; a < 3; ++a)
       if (!(hi[a] > lo[a])) f.fail(key + ".region_hi", "must exceed region_lo on every axis");
@@ -345,6 +408,8 @@ Scenario load_scenario(ScenarioFile& f) {
     const double r_min = f.get_or<double>(key + ".radius_min", species[s].radius, io::positive);
     const double r_max = f.get_or<double>(key + ".radius_max", species[s].radius, io::positive);
     if (r_max < r_min) f.fail(key + ".radius_max", "must not be below radius_min");
+    check_mass(f, key + ".radius_min", species[s], r_min);
+    check_mass(f, key + ".radius_max", species[s], r_max);
     const Vec3 velocity = f.get_or<Vec3>(key + ".velocity", Vec3{});
     const std::size_t first = index.spheres().size();
     try {
@@ -379,7 +444,10 @@ Scenario load_scenario(ScenarioFile& f) {
     p.species = species_index(key + ".species");
     p.density = species[p.species].density;
     p.total = static_cast<std::size_t>(f.get<std::int64_t>(key + ".count", io::positive));
-    p.batch = static_cast<std::size_t>(f.get<std::int64_t>(key + ".batch", io::positive));
+    budget.add(key + ".count", static_cast<double>(p.total));
+    // No batch can pour more than the total; a larger one only multiplied the attempts (20 per
+    // particle of the batch) drawn in a full region.
+    p.batch = std::min(p.total, static_cast<std::size_t>(f.get<std::int64_t>(key + ".batch", io::positive)));
     p.interval = f.get<double>(key + ".interval", io::positive);
     p.start_time = f.get_or<double>(key + ".start_time", 0.0, io::non_negative);
     p.region_lo = f.get<Vec3>(key + ".region_lo");
@@ -390,6 +458,8 @@ Scenario load_scenario(ScenarioFile& f) {
     p.radius_min = f.get_or<double>(key + ".radius_min", species[p.species].radius, io::positive);
     p.radius_max = f.get_or<double>(key + ".radius_max", species[p.species].radius, io::positive);
     if (p.radius_max < p.radius_min) f.fail(key + ".radius_max", "must not be below radius_min");
+    check_mass(f, key + ".radius_min", species[p.species], p.radius_min);
+    check_mass(f, key + ".radius_max", species[p.species], p.radius_max);
     p.velocity = f.get_or<Vec3>(key + ".velocity", Vec3{});
     if (species[p.species].body) {
       p.rigid = true;

@@ -39,8 +39,15 @@ struct Scenario {
   nlohmann::json derived;                    ///< contact times, time step, counts: printed by `talus check`
 };
 
+// What a scenario may ask for. The default refuses only counts no run could hold: 1e8
+// particles already take some 40 GB (400 bytes each). The fuzz target (tests/fuzz) lowers it
+// so that every input it tries builds in a moment.
+struct ScenarioLimits {
+  std::size_t max_particles = 100'000'000;  ///< explicit, inserted, poured, filled and chute particles in all
+};
+
 // Reads every section, validates it (errors name file, line and key) and builds the World.
 // Fails on keys nobody read. Overrides (--set) must be applied to `file` before.
-Scenario load_scenario(io::ScenarioFile& file);
+Scenario load_scenario(io::ScenarioFile& file, const ScenarioLimits& limits = {});
 
 }  // namespace talus
