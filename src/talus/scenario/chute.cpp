@@ -129,7 +129,10 @@ std::unique_ptr<World> build_chute(const ChuteSetup& s) {
   }
   const std::size_t n = chute_particle_count(s);
   const std::size_t first = index.spheres().size();
-  insert_growing(index, n, {0, 0, 0}, {s.length, s.width, s.fill_height}, 0.01,
+  // Centres a radius above a flat base: the wall is not in the overlap index, and a sphere placed
+  // across it would start up to a radius deep in contact and be shot off the base.
+  const double bottom = s.base_diameter > 0 ? 0.0 : 0.5 * s.diameter;
+  insert_growing(index, n, {0, 0, bottom}, {s.length, s.width, s.fill_height}, 0.01,
                  [&](std::mt19937_64&) { return 0.5 * s.diameter; }, rng);
   for (std::size_t k = first; k < index.spheres().size(); ++k)
     world->add_sphere(index.spheres()[k].centre, index.spheres()[k].radius, s.density, 0);

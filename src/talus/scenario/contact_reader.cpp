@@ -205,10 +205,13 @@ void read_tangential(const ChainReader& r, const ContactContext& ctx, ContactPar
       r.refuse(k, "tangential = \"mindlin\" takes its stiffness from youngs_modulus and poisson_ratio");
     c.tangential_law = TangentialStiffness::mindlin;
     c.tangential_stiffness = mindlin_stiffness(read_moduli(r, ctx, "tangential = \"mindlin\""));
-  } else if (name == "none" || name == "memoryless") {
+  } else if (name == "none") {
     // no spring
   } else {
     // Tangential stiffness: given, as a ratio to k_n, or after Pournin (Huet et al. 2021, Eqs. 18-19).
+    // "memoryless" keeps no spring but reads them too: Pournin's eta_t is its viscous friction, and
+    // a file written for the spring models runs memoryless with --set contact.model=memoryless
+    // (Huet et al. 2021, Sect. V B compares both on one packing).
     switch (r.which_of({"tangential_stiffness", "tangential_stiffness_ratio", "tangential_restitution"})) {
       case 0: c.tangential_stiffness = *r.number("tangential_stiffness", io::non_negative); break;
       case 1:
@@ -305,6 +308,18 @@ ContactParams read_contact(const io::ScenarioFile& f, const std::vector<std::str
   const bool clamp = clamp_key ? f.get<bool>(*clamp_key) : ctx.model != TangentialModel::elastic_spring;
   c.clamp = clamp ? NormalClamp::clamped : NormalClamp::free;
   c.normal_damping = read_damping(r, "normal", c, clamp);
+  // Past critical damping an unclamped linear contact never separates (the overlap creeps back to
+  // zero): it has no contact time (Weinhart et al. 2012, Eq. 5) to take the time step from.
+  if (!clamp && c.normal_law == normal_law_index<LinearNormal>()) {
+    const double zeta = c.normal_damping.at(ctx.reduced_mass) / (2 * std::sqrt(c.normal_stiffness * ctx.reduced_mass));
+    if (zeta >= 1) {
+      std::string key = r.key_of("normal_damping");
+      for (const char* name : {"normal_damping_rate", "normal_damping_factor"})
+        if (auto given = r.where(name)) key = *given;
+      f.fail(key, "overdamped (zeta = " + std::to_string(zeta) +
+                      "): without the clamp the pair never separates; lower the damping or set normal_clamp = true");
+    }
+  }
   read_tangential(r, ctx, c, tangential);
   read_rolling(r, ctx, c);
   return c;
