@@ -183,7 +183,8 @@ TEST(BlowUpGuard, SphereLaunchedAt1e200StopsTheRunWithStatus3) {
 // Sets the x velocity of one particle to NaN once the clock reaches `at`.
 class NanInjector : public RunObserver {
  public:
-  NanInjector(std::uint32_t gid, double at) : gid_(gid), at_(at) {}
+  // `injected` outlives the run (the scenario, and this observer with it, ends with the run).
+  NanInjector(std::uint32_t gid, double at, std::uint64_t& injected) : gid_(gid), at_(at), injected_step_(injected) {}
   std::string name() const override { return "nan_injector"; }
   double next_step_event(const World& /*world*/) const override {
     return injected_step_ ? std::numeric_limits<double>::infinity() : at_;
@@ -194,28 +195,25 @@ class NanInjector : public RunObserver {
     world.particles_mutable().velocity[static_cast<std::size_t>(i)].x = kNaN;
     injected_step_ = world.step_count();
   }
-  std::uint64_t injected_step() const { return injected_step_; }
 
  private:
   std::uint32_t gid_;
   double at_;
-  std::uint64_t injected_step_ = 0;
+  std::uint64_t& injected_step_;
 };
 
 TEST(BlowUpGuard, NanInAVelocityIsCaughtWithinABatch) {
   const fs::path dir = testing::test_folder();
-  NanInjector* injector = nullptr;
+  std::uint64_t injected = 0;
   const RunOutcome outcome = testing::run_case(two_beads("[0.0, 0.1, 0.0]"), dir / "out", 0, nullptr, "", [&](Scenario& sc) {
-    auto o = std::make_unique<NanInjector>(1, 0.05);
-    injector = o.get();
-    sc.observers.push_back(std::move(o));
+    sc.observers.push_back(std::make_unique<NanInjector>(1, 0.05, injected));
   });
   ASSERT_EQ(outcome.stop_reason, "blow_up");
   const nlohmann::json s = read_summary(dir / "out");
   const std::uint64_t step = s["blow_up"]["step"].get<std::uint64_t>();
-  ASSERT_GT(injector->injected_step(), 0u);
-  EXPECT_GT(step, injector->injected_step());
-  EXPECT_LE(step, injector->injected_step() + 64);  // found at the end of the next batch
+  ASSERT_GT(injected, 0u);
+  EXPECT_GT(step, injected);
+  EXPECT_LE(step, injected + 64);  // found at the end of the next batch
   EXPECT_EQ(outcome.error.rfind("step " + std::to_string(step) + " (t = ", 0), 0u) << outcome.error;
   // The drift has carried the NaN into the position; the velocity comes first, as the cause.
   EXPECT_NE(outcome.error.find("s): particle 1: velocity and position are not finite"), std::string::npos)
