@@ -328,13 +328,17 @@ ContactParams read_contact(const io::ScenarioFile& f, const std::vector<std::str
 double contact_duration(const ContactParams& c, double reduced_mass, double reduced_radius) {
   if (c.normal_law == normal_law_index<LinearNormal>()) {
     const double eta = c.normal_damping.at(reduced_mass);
+    // Near critical damping Eq. (5) grows without bound while the dashpot's own time scale
+    // 2 pi m / eta shrinks: the step follows the shorter, and never exceeds the one of twice the
+    // undamped half period (for zeta <= 0.5, every shipped example, Eq. 5 is the shortest; up to 0.707 it is).
+    const double half_period = std::numbers::pi * std::sqrt(reduced_mass / c.normal_stiffness);
     if (eta < 2 * std::sqrt(c.normal_stiffness * reduced_mass))
-      return params::collision_time(c.normal_stiffness, eta, reduced_mass);
+      return std::min({params::collision_time(c.normal_stiffness, eta, reduced_mass), 2 * half_period,
+                       eta > 0 ? 2 * std::numbers::pi * reduced_mass / eta : 2 * half_period});
     // Past critical damping (a clamped contact solved for e_n < exp(-2), or a dashpot given) the
     // time scale is the dashpot's, 2 pi m / eta (an explicit step must stay below 2 m / eta), or
     // the undamped half period if shorter.
-    return std::min(std::numbers::pi * std::sqrt(reduced_mass / c.normal_stiffness),
-                    2 * std::numbers::pi * reduced_mass / eta);
+    return std::min(half_period, 2 * std::numbers::pi * reduced_mass / eta);
   }
   // The damped impact at impact_speed; a dashpot so strong that the pair creeps apart would give
   // no time scale, so the elastic impact (the shorter) bounds it.
