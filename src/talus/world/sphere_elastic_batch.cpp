@@ -148,10 +148,11 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
 #endif
   // The law's options, the same for every pair (batch_law).
   const ContactParams& law = table.pair(0, 0);
-  const bool hertz = law.normal_law == normal_law_index<HertzNormal>();
-  const bool tsuji = hertz && law.damping_scaling == DampingScaling::tsuji;
-  const bool mindlin = law.tangential_law == TangentialStiffness::mindlin;
-  const bool reset_on_force = coefficients_grow(law);
+  // As 0/1 weights, not bools: a loop-invariant bool select stops GCC from vectorising the loop.
+  const double hertz = law.normal_law == normal_law_index<HertzNormal>() ? 1.0 : 0.0;
+  const double tsuji = hertz > 0 && law.damping_scaling == DampingScaling::tsuji ? 1.0 : 0.0;
+  const double mindlin = law.tangential_law == TangentialStiffness::mindlin ? 1.0 : 0.0;
+  const double sliding_eta = coefficients_grow(law) ? 0.0 : 1.0;  // sliding_dashpot (contact_law.h)
   const double floor = clamps_normal(law, TangentialModel::elastic_spring) ? 0.0 : -std::numeric_limits<double>::infinity();
 #pragma omp simd
   for (std::uint32_t k = 0; k < lanes; ++k) {
@@ -170,12 +171,14 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
     if constexpr (kGrown) {  // contact_coefficients, lane by lane: a = sqrt(R* delta)
       const double a = std::sqrt(ri[k] * rj[k] / (ri[k] + rj[k]) * overlap);
       const double damp = std::sqrt(a);
-      k_n = hertz ? k_n * a : k_n;
-      e_n = tsuji ? e_n * damp : e_n;
-      e_t = tsuji ? e_t * damp : e_t;
-      k_t = mindlin ? k_t * a : k_t;
+      const double normal_scale = 1.0 + hertz * (a - 1.0), damping_scale = 1.0 + tsuji * (damp - 1.0);
+      k_n *= normal_scale;
+      e_n *= damping_scale;
+      e_t *= damping_scale;
+      k_t *= 1.0 + mindlin * (a - 1.0);
     }
-    const double fn = std::max(k_n * overlap - e_n * vn, floor);  // Eq. (3); Huet et al. 2021, Eq. (5) when clamped
+    const double fn_free = k_n * overlap - e_n * vn;
+    const double fn = fn_free > floor ? fn_free : floor;  // Eq. (3); Huet et al. 2021, Eq. (5) when clamped
     const double f_max = mu[k] * std::abs(fn);
     Vec3 s{sx[k], sy[k], sz[k]};
     s += (vt - (dot(s, vij) * inv_dist) * n) * dt;      // Eq. (9), forward Euler
@@ -188,7 +191,7 @@ void sphere_elastic_batch(ContactBatch& b, const Vec3* __restrict position, cons
     ft *= slides ? truncation : 1.0;
     const double inv_kt = -1.0 / k_t;
     const double back = k_t > 0 ? inv_kt : 0.0;
-    const Vec3 s_slid = (ft + (reset_on_force ? 0.0 : e_t) * vt) * back;  // sliding_dashpot (contact_law.h)
+    const Vec3 s_slid = (ft + (sliding_eta * e_t) * vt) * back;
     sx[k] = slides ? s_slid.x : s.x;
     sy[k] = slides ? s_slid.y : s.y;
     sz[k] = slides ? s_slid.z : s.z;
