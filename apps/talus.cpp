@@ -260,8 +260,9 @@ int main(int argc, char** argv) {
   CLI::App* plot = app.add_subcommand("plot", "Plot a results folder: energies; dam-break, ensemble, sweep and hopper figures");
   plot->add_option("dir", path, "Results folder")->required();
 
-  int seeds = 1, jobs = 1, first_seed = 1;
+  int seeds = 1, jobs = 1, first_seed = 1, case_index = -1;
   std::vector<std::string> grid;
+  std::string slurm_script, slurm_time;
   CLI::App* ensemble = app.add_subcommand("ensemble", "Run a scenario for N seeds and aggregate (DIR/ensemble.json)");
   CLI::App* sweep = app.add_subcommand("sweep", "Run an ensemble per grid point (DIR/sweep.csv, flow map)");
   for (CLI::App* sub : {ensemble, sweep}) {
@@ -271,6 +272,9 @@ int main(int argc, char** argv) {
     sub->add_option("--jobs", jobs, "Runs at a time, one thread each")->check(CLI::PositiveNumber);
     sub->add_option("--out", out, "Results folder")->required();
     sub->add_option("--set", overrides, "Override a scenario value for every run: --set key=value (repeatable)");
+    sub->add_option("--slurm", slurm_script, "Write a Slurm job-array script (one run per task) instead of running");
+    sub->add_option("--slurm-time", slurm_time, "#SBATCH --time of each array task, e.g. 12:00:00");
+    sub->add_option("--case-index", case_index, "Run only run I of the list (a Slurm array task)")->check(CLI::NonNegativeNumber);
   }
   ensemble->get_option("--seeds")->required();
   sweep->add_option("--grid", grid, "key=v1,v2,... (repeatable: the grid is their product)")->required();
@@ -339,6 +343,9 @@ int main(int argc, char** argv) {
                                "--talus", self_path()});
       for (const auto& g : grid) args.insert(args.end(), {"--grid", g});
       for (const auto& o : overrides) args.insert(args.end(), {"--set", o});
+      if (!slurm_script.empty()) args.insert(args.end(), {"--slurm", slurm_script});
+      if (!slurm_time.empty()) args.insert(args.end(), {"--slurm-time", slurm_time});
+      if (case_index >= 0) args.insert(args.end(), {"--case-index", std::to_string(case_index)});
       return run_tool(*ensemble ? "dam_break_ensemble.py" : "dam_break_sweep.py", args);
     }
     if (*render) {

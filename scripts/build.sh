@@ -3,5 +3,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# TALUS_NATIVE=ON scripts/build.sh: tuned for this CPU (CMakeLists.txt, option TALUS_NATIVE).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTALUS_NATIVE="${TALUS_NATIVE:-OFF}" >/dev/null
 cmake --build build -j"$(nproc)"

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <sys/wait.h>
 
 namespace {
 
@@ -87,9 +88,9 @@ TEST(DamBreakEnsemble, AllAlikeIsRepeatable) {
   EXPECT_EQ(aggregate(single)["verdict"], "undetermined");  // one run cannot show intermittency
 }
 
-TEST(DamBreakEnsemble, CommandRunsEverySeed) {
-  const fs::path dir = fresh_dir("talus_ensemble_command");
-  std::ofstream(dir / "drop.toml") << R"([run]
+// Five spheres dropped in a box: a run of a few milliseconds.
+void write_drop_scenario(const fs::path& file) {
+  std::ofstream(file) << R"([run]
 end_time = 0.002
 [domain]
 lo = [0.0, 0.0, 0.0]
@@ -109,7 +110,24 @@ count = 5
 region_lo = [0.01, 0.01, 0.01]
 region_hi = [0.09, 0.09, 0.09]
 )";
-  const std::string talus = std::string(TALUS_BINARY_DIR) + "/talus";
+}
+
+int run_command(const std::string& cmd) {
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+const std::string kTalus = std::string(TALUS_BINARY_DIR) + "/talus";
+
+TEST(DamBreakEnsemble, CommandRunsEverySeed) {
+  const fs::path dir = fresh_dir("talus_ensemble_command");
+  write_drop_scenario(dir / "drop.toml");
+  const std::string talus = kTalus;
   ASSERT_EQ(std::system((talus + " ensemble " + (dir / "drop.toml").string() + " --seeds 3 --jobs 2 --out " +
                          (dir / "out").string() + " --set run.end_time=0.001 > /dev/null").c_str()), 0);
   const json e = json::parse(std::ifstream(dir / "out" / "ensemble.json"));
@@ -123,6 +141,47 @@ region_hi = [0.09, 0.09, 0.09]
     EXPECT_NE(text.find("seed = " + std::to_string(k)), std::string::npos) << text;
     EXPECT_NE(text.find("end_time = 0.001"), std::string::npos) << text;
   }
+}
+
+// Under mpirun the seeds are spread over the ranks: rank 0 drives and runs one, rank 1 the others
+// as they come (tools/case_pool.py); the ensemble is the same as on one process.
+TEST(DamBreakEnsemble, CommandSpreadsSeedsOverRanks) {
+  const fs::path dir = fresh_dir("talus_ensemble_mpi");
+  write_drop_scenario(dir / "drop.toml");
+  ASSERT_EQ(run_command("mpirun --oversubscribe --allow-run-as-root -n 2 " + kTalus + " ensemble " +
+                        (dir / "drop.toml").string() + " --seeds 4 --out " + (dir / "out").string() +
+                        " --set run.end_time=0.001 > " + (dir / "log.txt").string() + " 2>&1"),
+            0)
+      << read_text(dir / "log.txt");
+  EXPECT_NE(read_text(dir / "log.txt").find("ensemble: 2 ranks"), std::string::npos) << read_text(dir / "log.txt");
+  const json e = json::parse(std::ifstream(dir / "out" / "ensemble.json"));
+  EXPECT_EQ(e["runs"], 4);
+  for (int k = 1; k <= 4; ++k)
+    EXPECT_TRUE(fs::exists(dir / "out" / ("seed_" + std::to_string(k)) / "summary.json")) << "seed " << k;
+}
+
+// `--slurm FILE` writes a job array of one run per task; running its tasks one by one, as Slurm
+// would, runs every seed, and the last task alone writes the ensemble.
+TEST(DamBreakEnsemble, SlurmArrayRunsOneSeedPerTask) {
+  const fs::path dir = fresh_dir("talus_ensemble_slurm");
+  write_drop_scenario(dir / "drop.toml");
+  const fs::path script = dir / "ensemble.sbatch";
+  ASSERT_EQ(run_command("cd " + dir.string() + " && " + kTalus + " ensemble drop.toml --seeds 3 --out out" +
+                        " --set run.end_time=0.001 --slurm " + script.string() + " > /dev/null"),
+            0);
+  const std::string text = read_text(script);
+  EXPECT_NE(text.find("#SBATCH --array=0-2"), std::string::npos) << text;
+  EXPECT_FALSE(fs::exists(dir / "out" / "seed_1")) << "--slurm runs nothing";
+  for (int task = 0; task < 3; ++task) {
+    EXPECT_FALSE(fs::exists(dir / "out" / "ensemble.json")) << "written before task " << task;
+    ASSERT_EQ(run_command("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash " + script.string() + " > " +
+                          (dir / "task.log").string() + " 2>&1"),
+              0)
+        << read_text(dir / "task.log");
+    EXPECT_TRUE(fs::exists(dir / "out" / ("seed_" + std::to_string(task + 1)) / "summary.json"));
+  }
+  const json e = json::parse(std::ifstream(dir / "out" / "ensemble.json"));
+  EXPECT_EQ(e["runs"], 3);
 }
 
 }  // namespace

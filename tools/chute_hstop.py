@@ -9,8 +9,12 @@ and free slots run the possible next cases of a staircase ahead of its result (t
 needed is stopped). Writes DIR/hstop_runs.csv (every case) and DIR/hstop_intervals.csv (for each
 height the angle interval, for each angle the height interval, where arrested turns to flowing).
 
+Under mpirun the cases are spread over the ranks (tools/case_pool.py); --slurm FILE writes a
+job array of one staircase (one lambda) per task instead (tools/slurm_array.py).
+
 usage: chute_hstop.py SCENARIO --talus BIN [--lambda 1,0.5] [--jobs 2] [--out DIR] [--h0 4]
-       [--theta0 21] [--h-max 40] [--set KEY=VALUE ...]
+       [--theta0 21] [--h-max 40] [--set KEY=VALUE ...] [--slurm FILE [--slurm-time LIMIT]]
+       [--case-index I]
 """
 import argparse
 import os
@@ -18,6 +22,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import chute_runs  # noqa: E402
+import slurm_array  # noqa: E402
 
 
 class Staircase:
@@ -90,6 +95,19 @@ def write_intervals(path, rows):
     os.replace(tmp, path)
 
 
+def replay(runner, stairs):
+    """The rows of finished staircases, from their cached cases alone; None if one is unfinished."""
+    rows = []
+    for st in stairs:
+        while st.case:
+            s = runner.cached(st.case)
+            if s is None:
+                return None
+            rows.append(chute_runs.row_of(st.case, s, runner.folder(st.case)))
+            st.advance(chute_runs.is_arrested(s))
+    return rows
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("scenario")
@@ -104,7 +122,14 @@ def main(argv=None):
     ap.add_argument("--max-cases", type=int, default=60)
     ap.add_argument("--end-time", type=float, default=500, help="Sect. 6: arrest within 500 time units")
     ap.add_argument("--set", dest="overrides", action="append", default=[], help="extra scenario override")
+    slurm_array.add_options(ap)
     a = ap.parse_args(argv)
+    lambdas = [float(x) for x in a.lambdas.split(",")]
+    slurm_array.check_index(a.case_index, len(lambdas), "hstop")
+    if a.slurm:
+        args = slurm_array.without_option(sys.argv[1:] if argv is None else argv, "--slurm")
+        slurm_array.write_script(a.slurm, len(lambdas), "talus-hstop", a.out, args, a.slurm_time)
+        return
 
     # The arrest test of Sect. 6, and the flow height h from a short average at the end.
     overrides = ["run.end_time=%r" % a.end_time, "chute.flow_state.stop_when_arrested=true",
@@ -112,13 +137,17 @@ def main(argv=None):
                  "chute.coarse_graining.start=%r" % max(0.0, a.end_time - 20), "chute.coarse_graining.interval=0.1",
                  "chute.coarse_graining.extra_widths=[]"] + a.overrides
     runner = chute_runs.Runner(a.talus, a.scenario, a.out, a.jobs, overrides)
-    stairs = [Staircase(float(x), a.h0, a.theta0, a.h_max, a.theta_min, a.max_cases) for x in a.lambdas.split(",")]
+    def staircases(chosen):
+        return [Staircase(lam, a.h0, a.theta0, a.h_max, a.theta_min, a.max_cases) for lam in chosen]
+
+    stairs = staircases(lambdas if a.case_index is None else [lambdas[a.case_index]])
     rows = []
 
     def record(case):
         s = runner.done[case]
         rows.append(chute_runs.row_of(case, s, runner.folder(case)))
-        chute_runs.write_rows(os.path.join(a.out, "hstop_runs.csv"), rows)
+        if a.case_index is None:  # an array task writes the table only once every staircase is done
+            chute_runs.write_rows(os.path.join(a.out, "hstop_runs.csv"), rows)
 
     recorded = set()
     while any(st.case for st in stairs):
@@ -152,6 +181,13 @@ def main(argv=None):
                     runner.start(case)
         if runner.running:
             runner.wait_any()
+    runner.close()  # speculative cases still running are not needed
+    if a.case_index is not None:  # a Slurm array task: the tables need every staircase
+        rows = replay(runner, staircases(lambdas))
+        if rows is None:
+            print("h_stop search: lambda %g done; other staircases still run" % lambdas[a.case_index])
+            return
+        chute_runs.write_rows(os.path.join(a.out, "hstop_runs.csv"), rows)
     write_intervals(os.path.join(a.out, "hstop_intervals.csv"), intervals(rows))
     print("h_stop search: %d cases; %s/hstop_runs.csv, %s/hstop_intervals.csv" % (len(rows), a.out, a.out))
 

@@ -5,8 +5,11 @@ holds a summary, so an interrupted search resumes where it stopped."""
 import csv
 import json
 import os
-import subprocess
+import sys
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import case_pool  # noqa: E402
 
 COLUMNS = ["lambda", "H", "angle", "flow_state", "arrested", "stop_reason", "final_time", "h", "base", "surface",
            "mean_velocity", "froude", "mu_macro", "K", "alpha", "volume_fraction", "bulk_volume_fraction",
@@ -35,14 +38,20 @@ def row_of(case, summary, folder):
 
 
 class Runner:
-    """Starts `talus run` processes, at most `jobs` at once, and reports finished cases."""
+    """Starts `talus run` processes through a case pool (tools/case_pool.py: `jobs` at once here,
+    or one per rank under mpirun) and reports finished cases."""
 
     def __init__(self, talus, scenario, out, jobs, overrides, quiet=False):
-        self.talus, self.scenario, self.out, self.jobs = talus, scenario, out, jobs
+        self.talus, self.scenario, self.out = talus, scenario, out
         self.overrides, self.quiet = list(overrides), quiet
-        self.running = {}  # case -> (Popen, folder, start time)
+        self.pool = case_pool.open_pool(jobs, "chute study")
+        self.started = {}  # case -> start time
         self.done = {}     # case -> summary
         os.makedirs(out, exist_ok=True)
+
+    @property
+    def running(self):
+        return self.started
 
     def folder(self, case):
         return os.path.join(self.out, case_name(*case))
@@ -59,47 +68,51 @@ class Runner:
         return self.done.get(case)
 
     def free(self):
-        return self.jobs - len(self.running)
+        return self.pool.free()
 
-    def start(self, case):
-        if case in self.running or self.cached(case) is not None:
-            return
+    def command(self, case):
         lam, H, angle = case
         cmd = [self.talus, "run", self.scenario, "--out", self.folder(case), "--overwrite", "--quiet",
                "--threads", "1", "--set", "chute.base_diameter=%r" % float(lam),
                "--set", "chute.fill_height=%r" % float(H), "--set", "chute.angle=%r" % float(angle)]
         for o in self.overrides:
             cmd += ["--set", o]
-        log = open(self.folder(case) + ".log", "w")
-        self.running[case] = (subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT), self.folder(case), time.time())
+        return cmd
+
+    def start(self, case):
+        if case in self.started or self.cached(case) is not None:
+            return
+        self.pool.start(case, self.command(case), self.folder(case) + ".log")
+        self.started[case] = time.time()
         if not self.quiet:
             print("start  %s" % case_name(*case), flush=True)
 
     def cancel(self, case):
-        proc = self.running.pop(case)[0]
-        proc.terminate()
-        proc.wait()
+        self.pool.cancel(case)
+        del self.started[case]
         if not self.quiet:
             print("cancel %s (speculative, not needed)" % case_name(*case), flush=True)
 
     def wait_any(self):
         """Blocks until some running case ends; returns it (its summary is in self.done)."""
-        while True:
-            for case, (proc, folder, t0) in list(self.running.items()):
-                if proc.poll() is not None:
-                    del self.running[case]
-                    if proc.returncode != 0:
-                        raise RuntimeError("talus run failed for %s (see %s.log)" % (case_name(*case), folder))
-                    s = self.cached(case)
-                    if not self.quiet:
-                        print("done   %s: %s, h = %s (%.0f s)" % (case_name(*case), s.get("flow_state"), s.get("h"),
-                                                                 time.time() - t0), flush=True)
-                    return case
-            time.sleep(0.5)
+        case, status = self.pool.wait_any()
+        t0 = self.started.pop(case)
+        if status != 0:
+            raise RuntimeError("talus run failed for %s (see %s.log)" % (case_name(*case), self.folder(case)))
+        s = self.cached(case)
+        if s is None:
+            raise RuntimeError("talus run left no summary for %s (see %s.log)" % (case_name(*case), self.folder(case)))
+        if not self.quiet:
+            print("done   %s: %s, h = %s (%.0f s)" % (case_name(*case), s.get("flow_state"), s.get("h"),
+                                                     time.time() - t0), flush=True)
+        return case
+
+    def close(self):
+        self.pool.close()
 
 
 def write_rows(path, rows):
-    tmp = path + ".tmp"
+    tmp = "%s.%d.tmp" % (path, os.getpid())  # several writers (Slurm array tasks) may finish at once
     with open(tmp, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=COLUMNS)
         w.writeheader()

@@ -5,8 +5,12 @@ averaged over the last --average time units, `jobs` cases at once on one thread 
 DIR/sweep_runs.csv: flow state, h, u bar, F, mu, K, alpha and bulk volume fraction per case,
 the input of chute_fits.py and plot_chute.py.
 
+Under mpirun the cases are spread over the ranks (tools/case_pool.py); --slurm FILE writes a
+job array of one case per task instead (tools/slurm_array.py).
+
 usage: chute_sweep.py SCENARIO --talus BIN [--lambda 0,0.5,0.6667,0.8333,1,2] [--heights 10,20,30,40]
        [--angles 20,22,24,26,28,30] [--end-time 2000] [--average 100] [--jobs 2] [--out DIR] [--set K=V]
+       [--slurm FILE [--slurm-time LIMIT]] [--case-index I]
 """
 import argparse
 import os
@@ -14,6 +18,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import chute_runs  # noqa: E402
+import slurm_array  # noqa: E402
 
 
 def floats(text):
@@ -32,18 +37,29 @@ def main(argv=None):
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--out", default="results/sweep")
     ap.add_argument("--set", dest="overrides", action="append", default=[])
+    slurm_array.add_options(ap)
     a = ap.parse_args(argv)
+    cases = [(l, H, th) for l in floats(a.lambdas) for H in floats(a.heights) for th in floats(a.angles)]
+    slurm_array.check_index(a.case_index, len(cases), "flowmap")
+    if a.slurm:
+        args = slurm_array.without_option(sys.argv[1:] if argv is None else argv, "--slurm")
+        slurm_array.write_script(a.slurm, len(cases), "talus-flowmap", a.out, args, a.slurm_time)
+        return
     overrides = ["run.end_time=%r" % a.end_time, "chute.coarse_graining.start=%r" % max(0.0, a.end_time - a.average),
                  "chute.flow_state.stop_when_arrested=true"] + a.overrides
     runner = chute_runs.Runner(a.talus, a.scenario, a.out, a.jobs, overrides)
-    cases = [(l, H, th) for l in floats(a.lambdas) for H in floats(a.heights) for th in floats(a.angles)]
-    pending = [c for c in cases if runner.cached(c) is None]
-    print("sweep: %d cases, %d to run" % (len(cases), len(pending)), flush=True)
+    mine = cases if a.case_index is None else [cases[a.case_index]]
+    pending = [c for c in mine if runner.cached(c) is None]
+    print("sweep: %d cases, %d to run" % (len(mine), len(pending)), flush=True)
     while pending or runner.running:
         while pending and runner.free() > 0:
             runner.start(pending.pop(0))
         if runner.running:
             runner.wait_any()
+    runner.close()
+    if any(runner.cached(c) is None for c in cases):  # an array task whose siblings still run
+        print("sweep: %d of %d cases finished" % (sum(runner.cached(c) is not None for c in cases), len(cases)))
+        return
     rows = [chute_runs.row_of(c, runner.cached(c), runner.folder(c)) for c in cases]
     chute_runs.write_rows(os.path.join(a.out, "sweep_runs.csv"), rows)
     print("sweep: %s/sweep_runs.csv" % a.out)

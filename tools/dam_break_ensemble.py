@@ -3,6 +3,7 @@
 DIR/ensemble.csv (one row per measurement) and DIR/runs.csv (one row per run).
 
 Usage: dam_break_ensemble.py run FILE --seeds N [--first-seed S] --jobs J --out DIR [--set k=v ...]
+                             [--slurm FILE [--slurm-time LIMIT]] [--case-index I]
        dam_break_ensemble.py aggregate DIR      (aggregate the seed_* folders already in DIR)
 
 Huet et al. 2021 repeat every case with different initial microstructures (Sec. IV A, Fig. 9:
@@ -15,10 +16,12 @@ import csv
 import json
 import math
 import os
-import subprocess
 import sys
-import time
 from pathlib import Path
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import case_pool  # noqa: E402
+import slurm_array  # noqa: E402
 
 VERDICT_RULE = ("runs >= 2: intermittent if 0 < stable runs < runs (Huet et al. 2021, Fig. 9), "
                 "repeatable otherwise; runs < 2: undetermined")
@@ -27,7 +30,7 @@ REGIMES = ("stable", "fractured", "collapsed")
 
 def write_atomic(path: Path, text: str) -> None:
     """Writes to a temporary name and renames, so a reader never sees half a file."""
-    tmp = path.with_name(path.name + ".tmp")
+    tmp = path.with_name(f"{path.name}.{os.getpid()}.tmp")  # several writers (Slurm array tasks) may finish at once
     tmp.write_text(text)
     os.replace(tmp, path)
 
@@ -132,34 +135,35 @@ def write_ensemble(folder: Path, meta: dict | None = None) -> dict:
 
 
 def run_all(jobs_list, jobs: int, talus: str) -> list:
-    """Runs every (scenario, out, overrides) with at most `jobs` at a time, one thread each;
-    returns the failed ones. Finished runs (summary.json present) are not run again."""
-    env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE", OMP_NUM_THREADS="1")
+    """Runs every (scenario, out, overrides) through a case pool (tools/case_pool.py: `jobs` at
+    a time here, one per rank under mpirun), one thread each; returns the failed ones. Finished
+    runs (summary.json present) are not run again."""
+    pool = case_pool.open_pool(jobs, "ensemble")
     pending = [j for j in jobs_list if not (j[1] / "summary.json").exists()]
-    running, failed, done = [], [], len(jobs_list) - len(pending)
+    failed, done, running = [], len(jobs_list) - len(pending), 0
     total = len(jobs_list)
     while pending or running:
-        while pending and len(running) < jobs:
+        while pending and pool.free() > 0:
             scenario, out, overrides = pending.pop(0)
             out.parent.mkdir(parents=True, exist_ok=True)
-            log = open(out.parent / f"{out.name}.log", "w")
             cmd = [talus, "run", str(scenario), "--out", str(out), "--threads", "1", "--quiet", "--overwrite"]
             for o in overrides:
                 cmd += ["--set", o]
-            running.append((subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, env=env), out, log))
-        time.sleep(0.5)
-        for entry in list(running):
-            proc, out, log = entry
-            if proc.poll() is None:
-                continue
-            running.remove(entry)
-            log.close()
-            done += 1
-            status = "ok" if proc.returncode == 0 else f"failed ({proc.returncode}), see {out}.log"
-            if proc.returncode != 0:
-                failed.append(out)
-            print(f"[{done}/{total}] {out}: {status}", flush=True)
+            pool.start(out, cmd, str(out.parent / f"{out.name}.log"))
+            running += 1
+        out, code = pool.wait_any()
+        running -= 1
+        done += 1
+        status = "ok" if code == 0 else f"failed ({code}), see {out}.log"
+        if code != 0:
+            failed.append(out)
+        print(f"[{done}/{total}] {out}: {status}", flush=True)
+    pool.close()
     return failed
+
+
+def all_finished(jobs_list) -> bool:
+    return all((j[1] / "summary.json").exists() for j in jobs_list)
 
 
 def seed_jobs(scenario: str, out: Path, seeds: int, first_seed: int, overrides: list):
@@ -178,6 +182,7 @@ def main() -> None:
     run.add_argument("--out", required=True)
     run.add_argument("--set", action="append", default=[], dest="overrides")
     run.add_argument("--talus", default="talus", help="the talus executable")
+    slurm_array.add_options(run)
     agg = sub.add_parser("aggregate")
     agg.add_argument("dir")
     args = parser.parse_args()
@@ -187,7 +192,16 @@ def main() -> None:
         if args.seeds < 1 or args.jobs < 1:
             sys.exit("ensemble: --seeds and --jobs must be at least 1")
         out = Path(args.out)
-        failed = run_all(seed_jobs(args.scenario, out, args.seeds, args.first_seed, args.overrides), args.jobs, args.talus)
+        jobs = seed_jobs(args.scenario, out, args.seeds, args.first_seed, args.overrides)
+        slurm_array.check_index(args.case_index, len(jobs), "ensemble")
+        if args.slurm:
+            argv = slurm_array.without_option(sys.argv[1:], "--slurm")
+            slurm_array.write_script(args.slurm, len(jobs), "talus-ensemble", out, argv, args.slurm_time)
+            return
+        failed = run_all(jobs if args.case_index is None else [jobs[args.case_index]], args.jobs, args.talus)
+        if not all_finished(jobs):  # an array task whose siblings still run
+            print(f"ensemble: {sum((j[1] / 'summary.json').exists() for j in jobs)} of {len(jobs)} runs finished")
+            sys.exit(1 if failed else 0)
         record = write_ensemble(out, {"case": args.scenario, "overrides": args.overrides})
         if failed:
             print(f"ensemble: {len(failed)} run(s) failed: {', '.join(map(str, failed))}", file=sys.stderr)

@@ -4,6 +4,9 @@ of Huet et al. 2021, Fig. 9 for a dam break, the repose angle against mu_c (Appe
 for the hopper. Any scenario key can be swept; all runs of all points share one pool of jobs.
 
 Usage: dam_break_sweep.py FILE --grid key=v1,v2 [--grid key2=...] --seeds N --jobs J --out DIR [--set k=v]
+                          [--slurm FILE [--slurm-time LIMIT]] [--case-index I]
+Under mpirun the runs are spread over the ranks (tools/case_pool.py); --slurm FILE writes a job
+array of one run per task instead (tools/slurm_array.py).
 Writes DIR/<point>/seed_<k>/ and DIR/<point>/ensemble.json per point, then DIR/sweep.json and
 DIR/sweep.csv (one row per point: grid values, runs, regime fractions, verdict, mean and standard
 deviation of the headline measurements)."""
@@ -16,7 +19,8 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from dam_break_ensemble import REGIMES, run_all, seed_jobs, write_atomic, write_ensemble  # noqa: E402
+from dam_break_ensemble import REGIMES, all_finished, run_all, seed_jobs, write_atomic, write_ensemble  # noqa: E402
+import slurm_array  # noqa: E402
 
 # Measurements tabulated per point when the summaries have them (mean and std columns).
 HEADLINE = ["L0", "H0", "W0", "aspect_ratio", "runout", "final_height", "com_displacement", "coordination_number",
@@ -70,6 +74,7 @@ def main() -> None:
     parser.add_argument("--out", required=True)
     parser.add_argument("--set", action="append", default=[], dest="overrides")
     parser.add_argument("--talus", default="talus")
+    slurm_array.add_options(parser)
     args = parser.parse_args()
     if args.seeds < 1 or args.jobs < 1:
         sys.exit("sweep: --seeds and --jobs must be at least 1")
@@ -80,7 +85,15 @@ def main() -> None:
     for assignment in points:
         overrides = args.overrides + [f"{k}={v}" for k, v in assignment]
         jobs += seed_jobs(args.scenario, out / point_name(assignment), args.seeds, args.first_seed, overrides)
-    failed = run_all(jobs, args.jobs, args.talus)
+    slurm_array.check_index(args.case_index, len(jobs), "sweep")
+    if args.slurm:
+        argv = slurm_array.without_option(sys.argv[1:], "--slurm")
+        slurm_array.write_script(args.slurm, len(jobs), "talus-sweep", out, argv, args.slurm_time)
+        return
+    failed = run_all(jobs if args.case_index is None else [jobs[args.case_index]], args.jobs, args.talus)
+    if not all_finished(jobs):  # an array task whose siblings still run
+        print(f"sweep: {sum((j[1] / 'summary.json').exists() for j in jobs)} of {len(jobs)} runs finished")
+        sys.exit(1 if failed else 0)
     rows = []
     for assignment in points:
         folder = out / point_name(assignment)
@@ -95,7 +108,7 @@ def main() -> None:
     sweep = {"case": args.scenario, "grid": {k: v for k, v in grid}, "seeds": args.seeds, "overrides": args.overrides,
              "points": rows, "failed_runs": [str(f) for f in failed]}
     write_atomic(out / "sweep.json", json.dumps(sweep, indent=2) + "\n")
-    tmp = out / "sweep.csv.tmp"
+    tmp = out / f"sweep.csv.{os.getpid()}.tmp"
     with open(tmp, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=columns)
         writer.writeheader()
