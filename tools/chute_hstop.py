@@ -121,6 +121,8 @@ def main(argv=None):
     ap.add_argument("--theta-min", type=float, default=10)
     ap.add_argument("--max-cases", type=int, default=60)
     ap.add_argument("--end-time", type=float, default=500, help="Sect. 6: arrest within 500 time units")
+    ap.add_argument("--checkpoint-interval", type=float, default=50,
+                    help="time units between checkpoints of each case, which an interrupted case resumes from")
     ap.add_argument("--set", dest="overrides", action="append", default=[], help="extra scenario override")
     slurm_array.add_options(ap)
     a = ap.parse_args(argv)
@@ -135,7 +137,8 @@ def main(argv=None):
     overrides = ["run.end_time=%r" % a.end_time, "chute.flow_state.stop_when_arrested=true",
                  "chute.flow_state.arrest_time=%r" % a.end_time,
                  "chute.coarse_graining.start=%r" % max(0.0, a.end_time - 20), "chute.coarse_graining.interval=0.1",
-                 "chute.coarse_graining.extra_widths=[]"] + a.overrides
+                 "chute.coarse_graining.extra_widths=[]", "run.checkpoint_interval=%r" % a.checkpoint_interval,
+                 "run.checkpoint_keep=1"] + a.overrides
     runner = chute_runs.Runner(a.talus, a.scenario, a.out, a.jobs, overrides)
     def staircases(chosen):
         return [Staircase(lam, a.h0, a.theta0, a.h_max, a.theta_min, a.max_cases) for lam in chosen]

@@ -1,7 +1,8 @@
 """Runs chute cases with `talus run` (one OpenMP thread each, `jobs` at a time) and reads their
 summary.json: the engine of the h_stop search and the flow-state sweep (Weinhart et al. 2012,
 Sects. 6 and 8). A case is (lambda, H, theta); its results folder is reused when it already
-holds a summary, so an interrupted search resumes where it stopped."""
+holds a summary, and a case that was cut off goes on from its newest checkpoint (the tools set
+run.checkpoint_interval), so an interrupted search resumes where it stopped."""
 import csv
 import json
 import os
@@ -71,6 +72,10 @@ class Runner:
         return self.pool.free()
 
     def command(self, case):
+        # A case cut off (Ctrl-C, a time limit, a lost machine) goes on from its newest checkpoint,
+        # bit for bit, instead of starting again: long flows span several sessions or array tasks.
+        if os.path.exists(os.path.join(self.folder(case), "checkpoints", "latest.h5")):
+            return [self.talus, "resume", self.folder(case), "--quiet", "--threads", "1"]
         lam, H, angle = case
         cmd = [self.talus, "run", self.scenario, "--out", self.folder(case), "--overwrite", "--quiet",
                "--threads", "1", "--set", "chute.base_diameter=%r" % float(lam),

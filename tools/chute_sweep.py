@@ -36,6 +36,8 @@ def main(argv=None):
     ap.add_argument("--average", type=float, default=100, help="averaging window T at the end (Sect. 7: 100)")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--out", default="results/sweep")
+    ap.add_argument("--checkpoint-interval", type=float, default=50,
+                    help="time units between checkpoints of each case, which an interrupted case resumes from")
     ap.add_argument("--set", dest="overrides", action="append", default=[])
     slurm_array.add_options(ap)
     a = ap.parse_args(argv)
@@ -46,7 +48,8 @@ def main(argv=None):
         slurm_array.write_script(a.slurm, len(cases), "talus-flowmap", a.out, args, a.slurm_time)
         return
     overrides = ["run.end_time=%r" % a.end_time, "chute.coarse_graining.start=%r" % max(0.0, a.end_time - a.average),
-                 "chute.flow_state.stop_when_arrested=true"] + a.overrides
+                 "chute.flow_state.stop_when_arrested=true", "run.checkpoint_interval=%r" % a.checkpoint_interval,
+                 "run.checkpoint_keep=1"] + a.overrides
     runner = chute_runs.Runner(a.talus, a.scenario, a.out, a.jobs, overrides)
     mine = cases if a.case_index is None else [cases[a.case_index]]
     pending = [c for c in mine if runner.cached(c) is None]
