@@ -9,7 +9,7 @@ packages=(
   libhdf5-dev
   python3 python3-numpy python3-scipy python3-matplotlib
   python3-vtk9
-  openmpi-bin python3-mpi4py
+  openmpi-bin libopenmpi-dev python3-mpi4py
 )
 packages+=("$@")  # what one caller alone needs, e.g. clang for scripts/fuzz.sh
 missing=()
