@@ -65,6 +65,29 @@ TEST(ScenarioErrors, UnknownKeyIsReportedWithSuggestion) {
   EXPECT_NE(e.find("contact.friction"), std::string::npos) << e;
 }
 
+// A key the reader knows but the chosen contact models do not read is said to be so, with why,
+// rather than reported as unknown.
+TEST(ScenarioErrors, KnownKeysTheModelsDoNotReadAreNamedAsSuch) {
+  const std::string speed = load_error(replace(kValid, "friction = 0.5", "friction = 0.5\nimpact_speed = 2.0"));
+  EXPECT_NE(speed.find("case.toml:17: contact.impact_speed: not read: a linear spring reads it only beside max_overlap"),
+            std::string::npos)
+      << speed;
+  const std::string modulus = load_error(kValid, {"contact.youngs_modulus=1e9"});
+  EXPECT_NE(modulus.find("contact.youngs_modulus: not read: read by normal = \"hertz\" and tangential = \"mindlin\" only"),
+            std::string::npos)
+      << modulus;
+  const std::string formula = load_error(
+      replace(kValid, "normal_restitution = 0.5", "normal_damping_rate = 50\nrestitution_damping = \"eq11\""));
+  EXPECT_NE(formula.find("case.toml:16: contact.restitution_damping: not read: it says how normal_restitution becomes a "
+                         "dashpot, and this contact gives normal_damping_rate instead"),
+            std::string::npos)
+      << formula;
+  // Read by the models that use them, the same keys load.
+  EXPECT_EQ(load_error(replace(kValid, "normal_stiffness = 1e4", "normal = \"hertz\"\nyoungs_modulus = 1e7\n"
+                                                                  "poisson_ratio = 0.3\nimpact_speed = 1.0")),
+            "");
+}
+
 TEST(ScenarioErrors, NegativeStiffness) {
   const std::string e = load_error(replace(kValid, "normal_stiffness = 1e4", "normal_stiffness = -1e4"));
   EXPECT_EQ(e.rfind("case.toml:14: contact.normal_stiffness: must be positive", 0), 0u) << e;

@@ -92,6 +92,9 @@ class ScenarioFile {
   // order (overrides last), with a "did you mean" suggestion among the keys the program
   // asked for. Call it once all setup code has read its keys.
   void check_no_unknown_keys() const;
+  // If `key` is never read, check_no_unknown_keys reports it as `not read: why` rather than as
+  // unknown: a key the reader knows but the chosen models have no use for.
+  void explain_if_unread(std::string_view key, std::string why) const;
 
   // The final document (overrides applied) as TOML, headed by comments naming the source
   // file and the overrides, for copying into the results folder. Numbers keep full precision,

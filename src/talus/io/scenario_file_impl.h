@@ -2,6 +2,7 @@
 // Internal to ScenarioFile (its .cpp files only): the parsed document plus the bookkeeping
 // that turns silent mistakes into errors - which keys were read, which were asked for, and
 // which came from --set - and the one place that decides how a key's location is written.
+#include <map>
 #include <set>
 #include <string>
 #include <string_view>
@@ -21,6 +22,9 @@ struct ScenarioFile::Impl {
   mutable std::set<std::string, std::less<>> used;
   // Every key the program asked for, present or not: the candidates for "did you mean".
   mutable std::set<std::string, std::less<>> requested;
+  // Keys that exist in the scenario's vocabulary but that the chosen models do not read, with
+  // why: reported as such instead of as unknown keys (explain_if_unread).
+  mutable std::map<std::string, std::string, std::less<>> unread_reasons;
   // Keys set by --set, so their errors point at the command line instead of the file.
   std::set<std::string, std::less<>> overridden;
   std::vector<std::string> override_texts;  ///< as typed, in order, for to_toml()

@@ -48,7 +48,10 @@ void ScenarioFile::check_no_unknown_keys() const {
     const std::string key = format_key_path(key_path);
     const std::string location = impl_->where(key_path, key_path.size(), node);
     std::string text = "unknown key";
-    if (auto guess = closest_match(key, candidates)) text += " (did you mean " + *guess + "?)";
+    if (auto reason = impl_->unread_reasons.find(key); reason != impl_->unread_reasons.end())
+      text = "not read: " + reason->second;
+    else if (auto guess = closest_match(key, candidates))
+      text += " (did you mean " + *guess + "?)";
     reports.push_back({location.starts_with("--set "), node->source().begin.line,
                        Impl::compose(location, key, text)});
   }
@@ -58,6 +61,10 @@ void ScenarioFile::check_no_unknown_keys() const {
   std::vector<std::string> lines;
   for (auto& r : reports) lines.push_back(std::move(r.text));
   throw InputError(std::move(lines));
+}
+
+void ScenarioFile::explain_if_unread(std::string_view key, std::string why) const {
+  impl_->unread_reasons.insert_or_assign(std::string(key), std::move(why));
 }
 
 }  // namespace talus::io

@@ -45,6 +45,11 @@ class ChainReader {
     const std::string key = tables_.front() + "." + name;
     if (f_.has(key)) f_.fail(key, why);
   }
+  // Explains `name`, wherever given, if nothing reads it: a known key the chosen models ignore.
+  void unused(const std::string& name, const std::string& why) const {
+    for (const auto& t : tables_)
+      if (f_.has(t + "." + name)) f_.explain_if_unread(t + "." + name, why);
+  }
   // The key of `name` for messages: where it is given, else in the contact's own table.
   std::string key_of(const std::string& name) const { return where(name).value_or(tables_.front() + "." + name); }
   const io::ScenarioFile& file() const { return f_; }
@@ -123,6 +128,9 @@ DampingLaw read_damping(const ChainReader& r, const std::string& prefix, const C
                                           prefix + "_restitution"};
   DampingLaw d;
   const int given = r.which_of(names);
+  if (prefix == "normal" && given >= 0 && given != 3)
+    r.unused("restitution_damping", "it says how normal_restitution becomes a dashpot, and this contact gives " +
+                                        names[given] + " instead");
   if (c.damping_scaling == DampingScaling::tsuji && given >= 0 && given != 3)
     r.file().fail(*r.where(names[given]), "damping = \"tsuji\" takes " + prefix +
                                               "_restitution (its dashpot grows with the contact; Tsuji et al. 1992)");
@@ -184,6 +192,9 @@ void read_normal(const ChainReader& r, const ContactContext& ctx, ContactParams&
       }
       default: f.fail(r.primary(), "missing normal_stiffness (N/m), or max_overlap with impact_speed");
     }
+    r.unused("impact_speed", "a linear spring reads it only beside max_overlap; normal = \"hertz\" reads it for its contact time");
+    for (const char* k : {"youngs_modulus", "poisson_ratio"})
+      r.unused(k, "read by normal = \"hertz\" and tangential = \"mindlin\" only");
     return;
   }
   r.refuse("normal_stiffness", "normal = \"" + law + "\" takes youngs_modulus and poisson_ratio");
