@@ -90,26 +90,8 @@ TEST(DamBreakEnsemble, AllAlikeIsRepeatable) {
 
 // Five spheres dropped in a box: a run of a few milliseconds.
 void write_drop_scenario(const fs::path& file) {
-  std::ofstream(file) << R"([run]
-end_time = 0.002
-[domain]
-lo = [0.0, 0.0, 0.0]
-hi = [0.1, 0.1, 0.1]
-[box]
-lo = [0.0, 0.0, 0.0]
-hi = [0.1, 0.1, 0.1]
-[species.ball]
-density = 2500
-radius = 0.005
-[contact]
-normal_stiffness = 1e4
-normal_restitution = 0.5
-[[insert]]
-species = "ball"
-count = 5
-region_lo = [0.01, 0.01, 0.01]
-region_hi = [0.09, 0.09, 0.09]
-)";
+  fs::copy_file(fs::path(TALUS_SOURCE_DIR) / "tests" / "data" / "five_spheres_drop.toml", file,
+                fs::copy_options::overwrite_existing);
 }
 
 int run_command(const std::string& cmd) {

@@ -40,7 +40,17 @@ def launched_ranks():
     return 1
 
 
-class LocalPool:
+class _Pool:
+    def wait_any(self):
+        """Blocks until a case ends: (key, exit status)."""
+        while True:
+            done = self.poll()
+            if done:
+                return done
+            time.sleep(POLL_SECONDS)
+
+
+class LocalPool(_Pool):
     """Up to `slots` cases at once on this machine. A case is (key, command, log path)."""
 
     def __init__(self, slots):
@@ -69,20 +79,13 @@ class LocalPool:
                 return key, proc.returncode
         return None
 
-    def wait_any(self):
-        """Blocks until a case ends: (key, exit status)."""
-        while True:
-            done = self.poll()
-            if done:
-                return done
-            time.sleep(POLL_SECONDS)
 
     def close(self):
         for key in list(self.running):
             self.cancel(key)
 
 
-class MpiPool:
+class MpiPool(_Pool):
     """Rank 0's view of the ranks: one case of its own (a LocalPool of one slot) and one case
     on each serving rank."""
 
@@ -136,12 +139,6 @@ class MpiPool:
             return self.finished.pop(0)
         return self.local.poll() or self._receive()
 
-    def wait_any(self):
-        while True:
-            done = self.poll()
-            if done:
-                return done
-            time.sleep(POLL_SECONDS)
 
     def close(self):
         if self.closed:

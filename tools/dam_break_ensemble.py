@@ -166,6 +166,25 @@ def all_finished(jobs_list) -> bool:
     return all((j[1] / "summary.json").exists() for j in jobs_list)
 
 
+def run_study(jobs_list, args, name: str, out: Path):
+    """The runs of a study as its options ask: all of them (`--jobs` at a time, or over MPI
+    ranks), only run --case-index (a Slurm array task), or none but the array script (--slurm).
+    Returns the failed runs once every run is finished; None while the tables must wait (an
+    array written, or an array task whose siblings still run), after exiting 1 if this one failed."""
+    slurm_array.check_index(args.case_index, len(jobs_list), name)
+    if args.slurm:
+        slurm_array.write_script(args.slurm, len(jobs_list), "talus-" + name, out,
+                                 slurm_array.without_option(sys.argv[1:], "--slurm"), args.slurm_time)
+        return None
+    failed = run_all(jobs_list if args.case_index is None else [jobs_list[args.case_index]], args.jobs, args.talus)
+    if not all_finished(jobs_list):
+        print(f"{name}: {sum((j[1] / 'summary.json').exists() for j in jobs_list)} of {len(jobs_list)} runs finished")
+        if failed:
+            sys.exit(1)
+        return None
+    return failed
+
+
 def seed_jobs(scenario: str, out: Path, seeds: int, first_seed: int, overrides: list):
     return [(Path(scenario), out / f"seed_{k}", overrides + [f"run.seed={k}"])
             for k in range(first_seed, first_seed + seeds)]
@@ -192,16 +211,9 @@ def main() -> None:
         if args.seeds < 1 or args.jobs < 1:
             sys.exit("ensemble: --seeds and --jobs must be at least 1")
         out = Path(args.out)
-        jobs = seed_jobs(args.scenario, out, args.seeds, args.first_seed, args.overrides)
-        slurm_array.check_index(args.case_index, len(jobs), "ensemble")
-        if args.slurm:
-            argv = slurm_array.without_option(sys.argv[1:], "--slurm")
-            slurm_array.write_script(args.slurm, len(jobs), "talus-ensemble", out, argv, args.slurm_time)
+        failed = run_study(seed_jobs(args.scenario, out, args.seeds, args.first_seed, args.overrides), args, "ensemble", out)
+        if failed is None:
             return
-        failed = run_all(jobs if args.case_index is None else [jobs[args.case_index]], args.jobs, args.talus)
-        if not all_finished(jobs):  # an array task whose siblings still run
-            print(f"ensemble: {sum((j[1] / 'summary.json').exists() for j in jobs)} of {len(jobs)} runs finished")
-            sys.exit(1 if failed else 0)
         record = write_ensemble(out, {"case": args.scenario, "overrides": args.overrides})
         if failed:
             print(f"ensemble: {len(failed)} run(s) failed: {', '.join(map(str, failed))}", file=sys.stderr)

@@ -19,7 +19,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from dam_break_ensemble import REGIMES, all_finished, run_all, seed_jobs, write_atomic, write_ensemble  # noqa: E402
+from dam_break_ensemble import REGIMES, run_study, seed_jobs, write_atomic, write_ensemble  # noqa: E402
 import slurm_array  # noqa: E402
 
 # Measurements tabulated per point when the summaries have them (mean and std columns).
@@ -85,15 +85,9 @@ def main() -> None:
     for assignment in points:
         overrides = args.overrides + [f"{k}={v}" for k, v in assignment]
         jobs += seed_jobs(args.scenario, out / point_name(assignment), args.seeds, args.first_seed, overrides)
-    slurm_array.check_index(args.case_index, len(jobs), "sweep")
-    if args.slurm:
-        argv = slurm_array.without_option(sys.argv[1:], "--slurm")
-        slurm_array.write_script(args.slurm, len(jobs), "talus-sweep", out, argv, args.slurm_time)
+    failed = run_study(jobs, args, "sweep", out)
+    if failed is None:
         return
-    failed = run_all(jobs if args.case_index is None else [jobs[args.case_index]], args.jobs, args.talus)
-    if not all_finished(jobs):  # an array task whose siblings still run
-        print(f"sweep: {sum((j[1] / 'summary.json').exists() for j in jobs)} of {len(jobs)} runs finished")
-        sys.exit(1 if failed else 0)
     rows = []
     for assignment in points:
         folder = out / point_name(assignment)

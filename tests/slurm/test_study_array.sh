@@ -13,27 +13,7 @@ if [ "$(id -u)" -ne 0 ]; then echo "SKIP: needs root to run slurmd"; exit 77; fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-cat > drop.toml <<'TOML'
-[run]
-end_time = 0.001
-[domain]
-lo = [0.0, 0.0, 0.0]
-hi = [0.1, 0.1, 0.1]
-[box]
-lo = [0.0, 0.0, 0.0]
-hi = [0.1, 0.1, 0.1]
-[species.ball]
-density = 2500
-radius = 0.005
-[contact]
-normal_stiffness = 1e4
-normal_restitution = 0.5
-[[insert]]
-species = "ball"
-count = 5
-region_lo = [0.01, 0.01, 0.01]
-region_hi = [0.09, 0.09, 0.09]
-TOML
+cp "$here/../data/five_spheres_drop.toml" drop.toml
 "$talus" ensemble drop.toml --seeds 3 --out out --slurm ensemble.sbatch --slurm-time 5:00
 grep -q '^#SBATCH --array=0-2$' ensemble.sbatch
 grep -q '^#SBATCH --time=5:00$' ensemble.sbatch
