@@ -73,7 +73,7 @@ class Runner:
 
     def command(self, case):
         # A case cut off (Ctrl-C, a time limit, a lost machine) goes on from its newest checkpoint,
-        # bit for bit, instead of starting again: long flows span several sessions or array tasks.
+        # bit for bit, instead of starting again: long flows span several runs of a study or array tasks.
         if os.path.exists(os.path.join(self.folder(case), "checkpoints", "latest.h5")):
             return [self.talus, "resume", self.folder(case), "--quiet", "--threads", "1"]
         lam, H, angle = case
