@@ -6,7 +6,7 @@
 namespace talus {
 
 void CellGrid::setup(const Domain& domain, const std::vector<Vec3>& position, std::size_t owned,
-                     double range) {
+                     double range, int slab_axis) {
   Vec3 lo = domain.lo, hi = domain.hi;
   if (owned > 0) {
     Vec3 mn = position[0], mx = position[0];
@@ -37,7 +37,7 @@ void CellGrid::setup(const Domain& domain, const std::vector<Vec3>& position, st
     first_[a] = domain.periodic[a] ? -1 : 0;
     last_[a] = domain.periodic[a] ? n : n - 1;
   }
-  slab_axis_ = most_even_axis(position, owned);
+  slab_axis_ = slab_axis >= 0 ? slab_axis : most_even_axis(position, owned);
   const int s = slab_axis_, p = (s + 1) % 3, q = (s + 2) % 3;
   stride_[q] = 1;
   stride_[p] = last_[q] - first_[q] + 1;
@@ -77,6 +77,16 @@ CellCoord CellGrid::coord_of(const Vec3& x) const {
     const int k = static_cast<int>(std::floor((x[a] - origin_[a]) / width_[a]));
     c[a] = std::clamp(k, 0, count_[a] - 1);
   }
+  return c;
+}
+
+CellCoord CellGrid::halo_coord_of(const Vec3& x) const {
+  CellCoord c;
+  for (int a = 0; a < 3; ++a) {
+    const double k = std::floor((x[a] - origin_[a]) / width_[a]);
+    c[a] = static_cast<int>(std::clamp(k, static_cast<double>(first_[a]), static_cast<double>(last_[a])));
+  }
+  c[slab_axis_] = last_[slab_axis_];
   return c;
 }
 

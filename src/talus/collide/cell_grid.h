@@ -15,10 +15,15 @@ using CellCoord = std::array<std::int32_t, 3>;
 
 class CellGrid {
  public:
-  // Sets up cells no narrower than `range` over the owned positions [0, owned).
-  void setup(const Domain& domain, const std::vector<Vec3>& position, std::size_t owned, double range);
+  // Sets up cells no narrower than `range` over the owned positions [0, owned). The slab axis
+  // is the most even one (below) unless `slab_axis` names it.
+  void setup(const Domain& domain, const std::vector<Vec3>& position, std::size_t owned, double range,
+             int slab_axis = -1);
 
   CellCoord coord_of(const Vec3& x) const;  ///< cell of an owned particle (clamped into the grid)
+  // Cell of a ghost from the sub-domain above (halo_exchange.h): the layer past the last slab,
+  // and along the other axes its cell in the extended range (ghost layers included).
+  CellCoord halo_coord_of(const Vec3& x) const;
   int cells(int axis) const { return count_[axis]; }
   int slab_axis() const { return slab_axis_; }  ///< the axis whose cell layers hold the particles most evenly
   // Linear index of a cell with the slab axis slowest, over the extended range [first, last].

@@ -29,6 +29,32 @@ void add_contact_energy(Diagnostics& d, const ContactParams& c, double overlap, 
 }  // namespace
 
 Diagnostics World::diagnostics() const {
+  if (!distributed()) return local_diagnostics();
+  // Sums and maxima over the ranks; the mean speed from the ranks' sums of speeds.
+  const Communicator& comm = communicator();
+  Diagnostics d = local_diagnostics();
+  double mobile = 0;
+  for (std::size_t i = 0; i < particles_.owned; ++i) mobile += particles_.inv_mass[i] != 0.0;
+  std::vector<double> sums{d.kinetic_translational, d.kinetic_rotational, d.elastic_normal, d.elastic_tangential,
+                           d.elastic_rolling,       d.gravitational,      static_cast<double>(d.contacts),
+                           static_cast<double>(d.wall_contacts), d.mean_speed * mobile, mobile};
+  comm.sum_in_place(sums);
+  d.kinetic_translational = sums[0];
+  d.kinetic_rotational = sums[1];
+  d.elastic_normal = sums[2];
+  d.elastic_tangential = sums[3];
+  d.elastic_rolling = sums[4];
+  d.gravitational = sums[5];
+  d.contacts = static_cast<std::size_t>(sums[6]);
+  d.wall_contacts = static_cast<std::size_t>(sums[7]);
+  d.mean_speed = sums[9] > 0 ? sums[8] / sums[9] : 0;
+  d.max_overlap_ratio = comm.max(d.max_overlap_ratio);
+  d.max_speed = comm.max(d.max_speed);
+  d.max_angular_speed = comm.max(d.max_angular_speed);
+  return d;
+}
+
+Diagnostics World::local_diagnostics() const {
   Diagnostics d;
   d.time = time_;
   const ParticleStore& p = particles_;

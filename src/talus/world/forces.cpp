@@ -24,9 +24,17 @@ void World::compute_forces(double memory_dt) {
   } else {
     with_tangential_model(settings_.tangential_model, [&](auto model) { pair_forces<model.value>(memory_dt); });
   }
-  ghosts_.fold_forces(p);
+  fold_ghost_forces();
   if (walls_.empty()) return;
   with_tangential_model(settings_.tangential_model, [&](auto model) { wall_forces<model.value>(memory_dt); });
+}
+
+void World::fold_ghost_forces() {
+  if (distributed()) {
+    ScopedPhase phase(timer_, Phase::exchange);
+    halo_.reverse(particles_);
+  }
+  ghosts_.fold_forces(particles_);
 }
 
 double World::compute_forces_ending_step(double memory_dt, const StepEnd& end) {

@@ -5,11 +5,11 @@
 
 namespace talus {
 
-enum class Phase { integrate, neighbors, pair_forces, wall_forces, placement, count };
+enum class Phase { integrate, neighbors, pair_forces, wall_forces, placement, exchange, count };
 
 // The name each phase has in a run's summary.json.
 inline const char* phase_name(Phase p) {
-  constexpr const char* kNames[] = {"integrate", "neighbours", "pair_forces", "wall_forces", "placement"};
+  constexpr const char* kNames[] = {"integrate", "neighbours", "pair_forces", "wall_forces", "placement", "exchange"};
   return kNames[static_cast<int>(p)];
 }
 

@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
 #include "talus/integrate/velocity_verlet.h"
+#include "talus/parallel/migration.h"
 #include "talus/world/parallel.h"
 
 namespace talus {
@@ -82,7 +84,11 @@ int World::add_wall(const Wall& wall) {
 double World::interaction_range() const {
   double r_max = 0;
   for (std::size_t i = 0; i < particles_.owned; ++i) r_max = std::max(r_max, particles_.radius[i]);
-  return 2 * r_max + skin_;
+  return 2 * communicator().max(r_max) + skin_;
+}
+
+const Communicator& World::communicator() const {
+  return distributed() ? *slabs_.comm : Communicator::alone();
 }
 
 MemoryLayout World::memory_layout() const {
@@ -102,7 +108,7 @@ void World::prepare() {
     if (particles_.species[i] < 0 || particles_.species[i] >= table_.species())
       throw std::logic_error("particle species without contact parameters");
   }
-  skin_ = settings_.skin > 0 ? settings_.skin : 0.3 * r_max;
+  skin_ = particle_skin(communicator().max(r_max));
   wall_force_.assign(walls_.size(), Vec3{});
   rebuild();
   std::fill(particles_.force.begin(), particles_.force.end(), Vec3{});
@@ -128,21 +134,32 @@ void World::rebuild() {
   ParticleStore& p = particles_;
   p.drop_ghosts();
   const Domain& domain = settings_.domain;
-  const long owned = static_cast<long>(p.owned);
+  {
+    const long owned = static_cast<long>(p.owned);
 #pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
-  for (long i = 0; i < owned; ++i) p.position[i] = domain.wrap(p.position[i]);
+    for (long i = 0; i < owned; ++i) p.position[i] = domain.wrap(p.position[i]);
+  }
 
   const double range = interaction_range();
+  // Along the axis of a distributed world's slabs, the halo is the periodic image.
+  Domain image_domain = domain;
+  if (distributed()) image_domain.periodic[slabs_.axis] = false;
   for (int a = 0; a < 3; ++a)
-    if (domain.periodic[a] && domain.length(a) < 2 * range)
+    if (image_domain.periodic[a] && domain.length(a) < 2 * range)
       throw std::runtime_error("periodic box narrower than twice the interaction range");
-  grid_.setup(domain, p.position, p.owned, range);
 
   // The memories the new list must find, compact (the entries in contact only), so that the
   // new list is built in the old one's memory: the two never coexist at the peak.
   CarriedContacts& carried = carried_;
   pairs_.carry(gid_at_build_, next_gid_, has_composites(), carried);
   pairs_.clear();
+  if (distributed()) {
+    ScopedPhase exchange(timer_, Phase::exchange);
+    migrated_ += migrate(p, slabs_, carried, memory_layout(), next_gid_).left;
+  }
+  const long owned = static_cast<long>(p.owned);
+  grid_.setup(distributed() ? slab_grid_domain() : domain, p.position, p.owned, range,
+              distributed() ? slabs_.axis : -1);
 
   // Sort owned particles by cell, slab axis slowest: slabs become contiguous and neighbours
   // close in memory. A stable counting sort; the cells are recomputed after the sort rather
@@ -193,7 +210,11 @@ void World::rebuild() {
   }
 #pragma omp parallel for schedule(static) if (worth_parallel(p.owned))
   for (long i = 0; i < owned; ++i) cell_of[i] = grid_.coord_of(p.position[i]);
-  ghosts_.create(p, domain, grid_, range, cell_of);
+  ghosts_.create(p, image_domain, grid_, range, cell_of);
+  if (distributed()) {
+    ScopedPhase exchange(timer_, Phase::exchange);
+    halo_.create(p, slabs_, grid_, range, cell_of);
+  }
   grid_.bin(cell_of);
 
   const MemoryLayout layout = memory_layout();
@@ -281,7 +302,7 @@ void World::run(std::uint64_t steps) {
   if (steps == 0) return;
   if (!ready_) prepare();
   const double dt = settings_.time_step;
-  if (has_composites() || !settings_.fused_step_end) {
+  if (has_composites() || !settings_.fused_step_end || distributed()) {
     // The first step opens with its own half kick; each later one also closes the step before.
     for (std::uint64_t k = 0; k < steps; ++k) {
       open_step(k == 0 ? 1 : 2);
@@ -324,12 +345,36 @@ void World::open_step(int opening_kicks) {
 
 void World::move_to_next_step() {
   time_ += settings_.time_step;
-  if (needs_rebuild()) {
+  if (communicator().any(needs_rebuild())) {
     rebuild();  // new ghosts copy the current state, with zero forces
-  } else if (!ghosts_fresh_) {
-    ghosts_.refresh(particles_);
+  } else {
+    if (!ghosts_fresh_) ghosts_.refresh(particles_);
+    if (distributed()) {  // after the periodic images, which the rank below may hold copies of
+      ScopedPhase exchange(timer_, Phase::exchange);
+      halo_.forward(particles_);
+    }
   }
   ghosts_fresh_ = false;
+}
+
+Domain World::slab_grid_domain() const {
+  // The slab, as if periodic: the grid tiles it and keeps a layer above for the halo. An end
+  // of a non-periodic axis is where the outermost particle is.
+  Domain d = settings_.domain;
+  const int a = slabs_.axis;
+  const ParticleStore& p = particles_;
+  double lo = slabs_.lo(), hi = slabs_.hi();
+  if (!std::isfinite(lo) || !std::isfinite(hi)) {
+    double mn = std::numeric_limits<double>::infinity(), mx = -mn;
+    for (std::size_t i = 0; i < p.owned; ++i) mn = std::min(mn, p.position[i][a]), mx = std::max(mx, p.position[i][a]);
+    if (!std::isfinite(lo)) lo = std::isfinite(mn) ? mn : (std::isfinite(hi) ? hi - 1 : 0.0);
+    if (!std::isfinite(hi)) hi = std::isfinite(mx) ? std::max(mx, lo) : lo + 1;
+    if (!(hi > lo)) hi = lo + 1e-9 * std::max(1.0, std::abs(lo));
+  }
+  d.lo[a] = lo;
+  d.hi[a] = hi;
+  d.periodic[a] = true;
+  return d;
 }
 
 std::vector<std::int32_t> World::index_of_gid() const {

@@ -13,6 +13,8 @@
 #include "talus/contact/contact_law.h"
 #include "talus/contact/contact_table.h"
 #include "talus/integrate/velocity_verlet.h"
+#include "talus/parallel/halo_exchange.h"
+#include "talus/parallel/slab_decomposition.h"
 #include "talus/world/block_schedule.h"
 #include "talus/world/domain.h"
 #include "talus/world/periodic_ghosts.h"
@@ -131,10 +133,23 @@ class World {
   WorldState capture_state();
   void restore_state(const WorldState& state);
 
-  Diagnostics diagnostics() const;
+  Diagnostics diagnostics() const;  ///< of the whole system, on every rank of a distributed world
   Snapshot snapshot() const;  ///< particles in global id order, contacts with their forces
   // Owned index of each global id (-1 if absent); valid until the next rebuild.
   std::vector<std::int32_t> index_of_gid() const;
+
+  // Spreads the world over the ranks of `comm` as slabs along the pair list's slab axis
+  // (slab_decomposition.h), each rank keeping the particles of its slab. Every rank must hold
+  // the same whole system when it calls this. One rank along a periodic axis exchanges with
+  // itself (the periodic images along that axis are its halo), which tests the exchange alone.
+  void distribute(const Communicator& comm);
+  // The same with the slabs given (each at least an interaction range wide).
+  void distribute(const SlabDecomposition& slabs);
+  bool distributed() const { return slabs_.comm != nullptr; }
+  const SlabDecomposition& slabs() const { return slabs_; }
+  const HaloExchange& halo() const { return halo_; }
+  const Communicator& communicator() const;  ///< the ranks of a distributed world, else one rank
+  std::uint64_t particles_moved_between_ranks() const { return migrated_; }
 
   // Builds the lists and computes the forces now if the set-up changed since the last step
   // (particles added or removed, walls changed) instead of at the next step, which then finds
@@ -176,8 +191,14 @@ class World {
                                std::span<const SubContact> previous, std::vector<SubContact>& contacts,
                                double memory_dt);
   bool has_composites() const;
+  // The ghost forces handed back: those of ghosts from the rank above to their owners there,
+  // then those of periodic images to their owners here.
+  void fold_ghost_forces();
   std::size_t integration_cost() const;  ///< per particle, in sphere updates (velocity_verlet.h)
   double interaction_range() const;
+  double particle_skin(double largest_radius) const;  ///< m, the list's skin
+  Domain slab_grid_domain() const;
+  Diagnostics local_diagnostics() const;  ///< of this rank's particles and the pairs it lists  ///< what this rank's grid covers in a distributed world
   MemoryLayout memory_layout() const;
 
   WorldSettings settings_;
@@ -208,6 +229,9 @@ class World {
   std::vector<CellCoord> cell_of_;  ///< rebuild scratch: the cell of each particle and ghost
   WallContactList wall_pairs_;
   PeriodicGhosts ghosts_;
+  SlabDecomposition slabs_;  ///< comm == nullptr: not distributed
+  HaloExchange halo_;
+  std::uint64_t migrated_ = 0;
   std::vector<Vec3> position_at_build_;
   bool ghosts_fresh_ = false;  ///< ghosts were refreshed as their owners ended the step
   std::vector<StepEndKind> step_end_;  ///< per owned particle (mark_step_ends)

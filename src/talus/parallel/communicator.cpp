@@ -1,0 +1,121 @@
+#include "talus/parallel/communicator.h"
+
+#include <mpi.h>
+
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace talus {
+
+namespace {
+// mpirun (Open MPI's launcher, or PMIx under Slurm's srun) leaves these in a rank's
+// environment; without them the process is alone and never touches MPI.
+bool launched_by_mpirun() {
+  return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
+}
+
+void check(int code, const char* what) {
+  if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI error in ") + what);
+}
+
+void finalize_at_exit() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (!finalized) MPI_Finalize();
+}
+}  // namespace
+
+const Communicator& Communicator::world() {
+  static const Communicator comm = [] {
+    if (!launched_by_mpirun()) return Communicator(0, 1, false);
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    if (!initialized) {
+      int provided = 0;
+      // Threads of a rank (OpenMP) never call MPI: only the master thread communicates.
+      check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
+      std::atexit(finalize_at_exit);
+    }
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    return Communicator(rank, size, true);
+  }();
+  return comm;
+}
+
+const Communicator& Communicator::alone() {
+  static const Communicator comm(0, 1, false);
+  return comm;
+}
+
+double Communicator::max(double x) const {
+  if (!mpi_) return x;
+  double r = x;
+  check(MPI_Allreduce(&x, &r, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+  return r;
+}
+
+double Communicator::sum(double x) const {
+  if (!mpi_) return x;
+  double r = x;
+  check(MPI_Allreduce(&x, &r, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+  return r;
+}
+
+std::uint64_t Communicator::sum(std::uint64_t x) const {
+  if (!mpi_) return x;
+  std::uint64_t r = x;
+  check(MPI_Allreduce(&x, &r, 1, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+  return r;
+}
+
+bool Communicator::any(bool x) const {
+  if (!mpi_) return x;
+  int in = x ? 1 : 0, r = in;
+  check(MPI_Allreduce(&in, &r, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD), "MPI_Allreduce");
+  return r != 0;
+}
+
+void Communicator::sum_in_place(std::vector<double>& values) const {
+  if (!mpi_ || values.empty()) return;
+  check(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
+                      MPI_COMM_WORLD),
+        "MPI_Allreduce");
+}
+
+void Communicator::barrier() const {
+  if (mpi_) check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
+}
+
+std::vector<std::byte> Communicator::exchange(const std::vector<std::byte>& out, int to, int from, int tag) const {
+  if (!mpi_) return from == rank_ ? out : std::vector<std::byte>{};
+  if (to == rank_ && from == rank_) return out;
+  if (to < 0) to = MPI_PROC_NULL;
+  if (from < 0) from = MPI_PROC_NULL;
+  // Sizes first, so that the receiver can size its buffer; then the bytes.
+  std::uint64_t out_size = out.size(), in_size = 0;
+  check(MPI_Sendrecv(&out_size, 1, MPI_UINT64_T, to, tag, &in_size, 1, MPI_UINT64_T, from, tag, MPI_COMM_WORLD,
+                     MPI_STATUS_IGNORE),
+        "MPI_Sendrecv");
+  std::vector<std::byte> in(in_size);
+  check(MPI_Sendrecv(out.data(), static_cast<int>(out_size), MPI_BYTE, to, tag + 1, in.data(),
+                     static_cast<int>(in_size), MPI_BYTE, from, tag + 1, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+        "MPI_Sendrecv");
+  return in;
+}
+
+std::vector<std::byte> Communicator::all_gather(const std::vector<std::byte>& mine) const {
+  if (!mpi_) return mine;
+  const int n = static_cast<int>(mine.size());
+  std::vector<int> counts(size_), displs(size_, 0);
+  check(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Allgather");
+  for (int r = 1; r < size_; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+  std::vector<std::byte> all(static_cast<std::size_t>(displs.back() + counts.back()));
+  check(MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, MPI_COMM_WORLD),
+        "MPI_Allgatherv");
+  return all;
+}
+
+}  // namespace talus

@@ -1,0 +1,169 @@
+#include "talus/parallel/migration.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace talus {
+
+namespace {
+constexpr int kMigrateTag = 110;
+
+struct Record {
+  std::uint32_t a, b;
+  Vec3 spring, normal_prev, rolling;
+};
+
+struct ParticleRow {
+  Vec3 position, velocity, angular_velocity, force, torque;
+  Quat orientation;
+  double radius, inv_mass, mass;
+  Vec3 inv_inertia;
+  std::int32_t species, shape;
+  std::uint32_t gid;
+};
+
+ParticleRow row_of(const ParticleStore& p, std::size_t i) {
+  return {p.position[i], p.velocity[i], p.angular_velocity[i], p.force[i], p.torque[i], p.orientation[i],
+          p.radius[i],   p.inv_mass[i], p.mass[i],             p.inv_inertia[i], p.species[i], p.shape[i], p.gid[i]};
+}
+
+void put_row(ParticleStore& p, std::size_t i, const ParticleRow& r) {
+  p.position[i] = r.position;
+  p.velocity[i] = r.velocity;
+  p.angular_velocity[i] = r.angular_velocity;
+  p.force[i] = r.force;
+  p.torque[i] = r.torque;
+  p.orientation[i] = r.orientation;
+  p.radius[i] = r.radius;
+  p.inv_mass[i] = r.inv_mass;
+  p.mass[i] = r.mass;
+  p.inv_inertia[i] = r.inv_inertia;
+  p.species[i] = r.species;
+  p.shape[i] = r.shape;
+  p.gid[i] = r.gid;
+}
+
+Record record_of(const CarriedContacts& c, std::uint32_t a, std::size_t k) {
+  const auto at = [k](const std::vector<Vec3>& v) { return v.empty() ? Vec3{} : v[k]; };
+  return {a, c.other[k], at(c.memory.spring), at(c.memory.normal_prev), at(c.memory.rolling)};
+}
+
+// What goes to one neighbour: the particles entering its slab, then the records.
+struct Parcel {
+  std::vector<ParticleRow> particles;
+  std::vector<Record> records;
+  std::vector<std::byte> bytes() const {
+    std::vector<std::byte> out;
+    ByteWriter w(out);
+    w.put(static_cast<std::uint64_t>(particles.size()));
+    for (const ParticleRow& r : particles) w.put(r);
+    w.put(static_cast<std::uint64_t>(records.size()));
+    for (const Record& r : records) w.put(r);
+    return out;
+  }
+  static Parcel from(const std::vector<std::byte>& in) {
+    Parcel p;
+    if (in.empty()) return p;
+    ByteReader r(in);
+    p.particles.resize(r.get<std::uint64_t>());
+    for (ParticleRow& row : p.particles) row = r.get<ParticleRow>();
+    p.records.resize(r.get<std::uint64_t>());
+    for (Record& rec : p.records) rec = r.get<Record>();
+    return p;
+  }
+};
+}  // namespace
+
+MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, CarriedContacts& carried,
+                       const MemoryLayout& layout, std::size_t gid_limit) {
+  const int me = slabs.rank(), lower = slabs.lower(), upper = slabs.upper();
+  // Parcels to the neighbours below [0] and above [1]; one parcel if they are the same rank.
+  Parcel parcel[2];
+  const auto parcel_for = [&](int rank) -> Parcel& { return rank == lower ? parcel[0] : parcel[1]; };
+  std::vector<char> owned_after(gid_limit, 0);
+  std::vector<std::uint32_t> order, leaving;
+  for (std::size_t i = 0; i < p.owned; ++i) {
+    const int owner = slabs.owner_of(p.position[i][slabs.axis]);
+    if (owner == me) {
+      order.push_back(static_cast<std::uint32_t>(i));
+      owned_after[p.gid[i]] = 1;
+      continue;
+    }
+    if (owner != lower && owner != upper)
+      throw std::runtime_error("particle " + std::to_string(p.gid[i]) + " moved from rank " + std::to_string(me) +
+                               " to rank " + std::to_string(owner) + ", past a neighbour, between two rebuilds");
+    parcel_for(owner).particles.push_back(row_of(p, i));
+    leaving.push_back(static_cast<std::uint32_t>(i));
+  }
+
+  // Records of pairs this rank no longer holds wholly go to the neighbours, who may now list them.
+  std::vector<Record> kept;
+  for (std::uint32_t a = 0; a < gid_limit; ++a)
+    for (std::uint32_t k = carried.start[a]; k < carried.start[a + 1]; ++k) {
+      const Record r = record_of(carried, a, k);
+      if (owned_after[r.a] && owned_after[r.b]) {
+        kept.push_back(r);
+        continue;
+      }
+      if (owned_after[r.a] || owned_after[r.b]) kept.push_back(r);
+      if (lower >= 0 && lower != me) parcel[0].records.push_back(r);
+      if (upper >= 0 && upper != me && upper != lower) parcel[1].records.push_back(r);
+    }
+
+  // Down, then up (each rank sends to one neighbour and receives from the other).
+  MigrationCount count{leaving.size(), 0};
+  std::vector<Parcel> arrived;
+  const auto swap_with = [&](int to, int from, const Parcel& out, int tag) {
+    if ((to < 0 || to == me) && (from < 0 || from == me)) return;
+    arrived.push_back(Parcel::from(slabs.comm->exchange(out.bytes(), to == me ? -1 : to, from == me ? -1 : from, tag)));
+  };
+  swap_with(lower, upper, parcel[0], kMigrateTag);
+  if (upper != lower) swap_with(upper, lower, parcel[1], kMigrateTag + 2);
+
+  // Leavers go (the order keeps the others in place), arrivals are appended.
+  const std::size_t stay = order.size();
+  order.insert(order.end(), leaving.begin(), leaving.end());
+  p.permute_owned(order);
+  p.owned = stay;
+  p.resize(stay);
+  for (const Parcel& in : arrived) {
+    for (const ParticleRow& r : in.particles) {
+      const std::size_t i = p.owned;
+      p.resize(i + 1);
+      p.owned = i + 1;
+      put_row(p, i, r);
+      owned_after[r.gid] = 1;
+      ++count.arrived;
+    }
+    kept.insert(kept.end(), in.records.begin(), in.records.end());
+  }
+
+  // Every record keyed by a particle this rank owns (seen from it; memories change sign when
+  // seen from the other body), the others dropped; then grouped by key as carry() makes them.
+  std::vector<std::uint32_t> start(gid_limit + 1, 0);
+  std::size_t n = 0;
+  for (Record& r : kept) {
+    if (!owned_after[r.a]) {
+      if (!owned_after[r.b]) continue;
+      r = {r.b, r.a, -1.0 * r.spring, -1.0 * r.normal_prev, -1.0 * r.rolling};
+    }
+    kept[n++] = r;
+    ++start[r.a + 1];
+  }
+  kept.resize(n);
+  for (std::size_t a = 0; a < gid_limit; ++a) start[a + 1] += start[a];
+  carried.start = start;
+  carried.other.resize(n);
+  carried.entry.clear();
+  carried.memory.resize_for_overwrite(n, layout);
+  for (const Record& r : kept) {
+    const std::uint32_t k = start[r.a]++;
+    carried.other[k] = r.b;
+    if (layout.spring) carried.memory.spring[k] = r.spring;
+    if (layout.normal_prev) carried.memory.normal_prev[k] = r.normal_prev;
+    if (layout.rolling) carried.memory.rolling[k] = r.rolling;
+  }
+  return count;
+}
+
+}  // namespace talus
