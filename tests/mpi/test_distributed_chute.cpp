@@ -120,6 +120,19 @@ TEST(DistributedChute, SameTrajectoriesToRoundOffOverTheFirstHundredSteps) {
   EXPECT_NEAR(b.kinetic(), a.kinetic(), 1e-9 * a.kinetic());
   EXPECT_NEAR(b.elastic_tangential, a.elastic_tangential, 1e-6 * a.elastic_tangential);
   EXPECT_EQ(b.contacts, a.contacts);
+  // The snapshot joins the ranks' pieces: every particle once, every contact once, with the
+  // force it carries on one rank.
+  const Snapshot one = reference->snapshot(), all = spread->snapshot();
+  ASSERT_EQ(all.particles.size(), one.particles.size());
+  for (std::size_t k = 0; k < one.particles.size(); ++k) ASSERT_EQ(all.particles[k].id, one.particles[k].id);
+  ASSERT_EQ(all.contacts.size(), one.contacts.size());
+  std::map<std::pair<int, int>, Vec3> force;
+  for (const ContactRecord& c : one.contacts) force[{std::min(c.i, c.j), std::max(c.i, c.j)}] = c.i < c.j ? c.force : -1.0 * c.force;
+  for (const ContactRecord& c : all.contacts) {
+    const auto it = force.find({std::min(c.i, c.j), std::max(c.i, c.j)});
+    ASSERT_NE(it, force.end());
+    EXPECT_LT(norm((c.i < c.j ? c.force : -1.0 * c.force) - it->second), 1e-9 * (1 + norm(it->second)));
+  }
 }
 
 // Pairs this rank lists with a ghost from the rank above whose memory holds a loaded spring.

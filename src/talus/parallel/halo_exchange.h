@@ -28,7 +28,7 @@ class HaloExchange {
 
   std::size_t first() const { return first_; }  ///< index of the first ghost from above
   std::size_t count() const { return received_; }
-  std::size_t sent() const { return sent_index_.size(); }
+  const std::vector<std::uint32_t>& sent_indices() const { return sent_index_; }  ///< sent down, owned or images
 
  private:
   const SlabDecomposition* slabs_ = nullptr;

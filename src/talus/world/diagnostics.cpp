@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "talus/world/distributed_snapshot.h"
 #include "talus/world/memory_ref.h"
 #include "talus/world/world.h"
 
@@ -120,6 +121,10 @@ Diagnostics World::local_diagnostics() const {
 }
 
 Snapshot World::snapshot() const {
+  return distributed() ? gather_snapshot(local_snapshot(), communicator(), next_gid_) : local_snapshot();
+}
+
+Snapshot World::local_snapshot() const {
   Snapshot s;
   s.time = time_;
   s.gravity = settings_.gravity;
@@ -131,11 +136,13 @@ Snapshot World::snapshot() const {
   std::vector<std::uint32_t> order(p.owned);
   for (std::size_t i = 0; i < p.owned; ++i) order[i] = static_cast<std::uint32_t>(i);
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return p.gid[a] < p.gid[b]; });
+  // Contacts name their particles by record, or by global id in a distributed world's piece
+  // (gather_snapshot renumbers them).
   std::vector<int> record_of(p.owned);
   s.particles.reserve(p.owned);
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::uint32_t i = order[k];
-    record_of[i] = static_cast<int>(k);
+    record_of[i] = distributed() ? static_cast<int>(p.gid[i]) : static_cast<int>(k);
     ParticleRecord r;
     r.id = p.gid[i];
     r.species = p.species[i];
@@ -152,7 +159,10 @@ Snapshot World::snapshot() const {
   }
   if (!ready_) return s;
   // Contact forces are re-evaluated from the stored memories with the current velocities.
-  auto owner = [&](std::uint32_t j) { return j < p.owned ? j : ghosts_.owner(j - p.owned); };
+  const auto record_of_neighbor = [&](std::uint32_t j) {
+    if (distributed()) return static_cast<int>(p.gid[j]);
+    return record_of[j < p.owned ? j : ghosts_.owner(j - p.owned)];
+  };
   ContactMemory scratch = pairs_.memory;
   for (std::size_t i = 0; i < pairs_.rows(); ++i)
     for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
@@ -161,7 +171,7 @@ Snapshot World::snapshot() const {
         for (const SubContact& sc : pair_sub_.of(e)) {
           ContactRecord rec;
           rec.i = record_of[i];
-          rec.j = record_of[owner(j)];
+          rec.j = record_of_neighbor(j);
           rec.point = settings_.domain.wrap(sc.point);
           rec.normal = sc.normal_prev;
           rec.force = sc.force;
@@ -189,7 +199,7 @@ Snapshot World::snapshot() const {
           settings_.tangential_model, [&](auto model) { return contact_force<model.value>(g, m, c, mij, rij, 0, h); });
       ContactRecord rec;
       rec.i = record_of[i];
-      rec.j = record_of[owner(j)];
+      rec.j = record_of_neighbor(j);
       rec.point = settings_.domain.wrap(p.position[i] + g.arm_i);
       rec.normal = g.normal;
       rec.force = res.force_on_i;

@@ -42,11 +42,11 @@ double World::compute_forces_ending_step(double memory_dt, const StepEnd& end) {
   double max_d2 = 0;
   with_tangential_model(settings_.tangential_model,
                         [&](auto model) { max_d2 = pair_forces<model.value>(memory_dt, &end); });
-  if (walls_.empty()) {  // the owners of ghosts, the only late particles, ended in the pass
+  if (walls_.empty() && !distributed()) {  // the owners of ghosts, the only late particles, ended in the pass
     ghosts_fresh_ = end.next_step;  // for move_to_next_step, which follows at once
     return max_d2;
   }
-  ghosts_.fold_forces(p);
+  fold_ghost_forces();
   if (!walls_.empty())
     with_tangential_model(settings_.tangential_model, [&](auto model) { wall_forces<model.value>(memory_dt); });
   ScopedPhase phase(timer_, Phase::integrate);

@@ -271,6 +271,9 @@ void World::mark_step_ends() {
 #pragma omp for schedule(static)
     for (long k = 0; k < owners; ++k) step_end_[ghosts_.owner_at(k)] = StepEndKind::late;
   }
+  // Particles with copies on the rank below wait for their forces from there.
+  for (const std::uint32_t k : halo_.sent_indices())
+    step_end_[k < owned ? k : ghosts_.owner(k - owned)] = StepEndKind::late;
   for (std::size_t i = 0; i < owned; ++i)
     if (step_end_[i] == StepEndKind::late) late_.push_back(static_cast<std::uint32_t>(i));
 
@@ -279,7 +282,7 @@ void World::mark_step_ends() {
   // an owner whose ghosts all share its slab can end with it, while its data is in cache; only
   // the images across the slab axis's faces wait for the whole pass. (With walls, every late
   // particle waits for the ghost fold and the wall forces instead: the lists stay empty.)
-  if (!walls_.empty()) return;
+  if (!walls_.empty() || distributed()) return;
   std::size_t slab = 0;
   for (std::size_t k = 0; k < ghosts_.owners(); ++k) {
     if (!ghosts_.ghosts_share_layer(k, grid_.slab_axis())) {
@@ -302,7 +305,7 @@ void World::run(std::uint64_t steps) {
   if (steps == 0) return;
   if (!ready_) prepare();
   const double dt = settings_.time_step;
-  if (has_composites() || !settings_.fused_step_end || distributed()) {
+  if (has_composites() || !settings_.fused_step_end) {
     // The first step opens with its own half kick; each later one also closes the step before.
     for (std::uint64_t k = 0; k < steps; ++k) {
       open_step(k == 0 ? 1 : 2);

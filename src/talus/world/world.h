@@ -134,7 +134,9 @@ class World {
   void restore_state(const WorldState& state);
 
   Diagnostics diagnostics() const;  ///< of the whole system, on every rank of a distributed world
-  Snapshot snapshot() const;  ///< particles in global id order, contacts with their forces
+  // Particles in global id order, contacts with their forces: the whole system, on every rank
+  // of a distributed world.
+  Snapshot snapshot() const;
   // Owned index of each global id (-1 if absent); valid until the next rebuild.
   std::vector<std::int32_t> index_of_gid() const;
 
@@ -198,7 +200,8 @@ class World {
   double interaction_range() const;
   double particle_skin(double largest_radius) const;  ///< m, the list's skin
   Domain slab_grid_domain() const;
-  Diagnostics local_diagnostics() const;  ///< of this rank's particles and the pairs it lists  ///< what this rank's grid covers in a distributed world
+  Diagnostics local_diagnostics() const;
+  Snapshot local_snapshot() const;  ///< of this rank's particles and the pairs it lists  ///< what this rank's grid covers in a distributed world
   MemoryLayout memory_layout() const;
 
   WorldSettings settings_;
