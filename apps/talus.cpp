@@ -17,6 +17,7 @@
 #include "talus/io/scenario_file.h"
 #include "talus/scenario/checkpoint_series.h"
 #include "talus/scenario/run_checkpoint.h"
+#include "talus/parallel/communicator.h"
 #include "talus/scenario/run_loop.h"
 #include "talus/scenario/saved_coarse_grain.h"
 #include "talus/scenario/scenario.h"
@@ -68,6 +69,11 @@ std::filesystem::path results_dir_of(const std::filesystem::path& checkpoint) {
 
 int run_file(io::ScenarioFile& file, const std::string& label, std::string out, bool overwrite, bool quiet, int threads,
              const RunStart& run_start) {
+  // The engine runs spread over ranks (World::distribute), but a run's outputs and checkpoints
+  // are not yet written from several ranks: every rank would write the same files.
+  if (Communicator::world().size() > 1)
+    throw std::runtime_error("`talus run` and `talus resume` run on one rank: start them without mpirun (studies "
+                             "spread their cases over ranks: `mpirun talus sweep|ensemble|hstop|flowmap`)");
   Scenario scenario = load_scenario(file);
   RunOptions options;
   options.scenario_toml = file.to_toml();

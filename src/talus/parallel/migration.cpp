@@ -52,6 +52,7 @@ Record record_of(const CarriedContacts& c, std::uint32_t a, std::size_t k) {
 struct Parcel {
   std::vector<ParticleRow> particles;
   std::vector<Record> records;
+  std::vector<WallMemoryRecord> wall_records;
   std::vector<std::byte> bytes() const {
     std::vector<std::byte> out;
     ByteWriter w(out);
@@ -59,6 +60,8 @@ struct Parcel {
     for (const ParticleRow& r : particles) w.put(r);
     w.put(static_cast<std::uint64_t>(records.size()));
     for (const Record& r : records) w.put(r);
+    w.put(static_cast<std::uint64_t>(wall_records.size()));
+    for (const WallMemoryRecord& r : wall_records) w.put(r);
     return out;
   }
   static Parcel from(const std::vector<std::byte>& in) {
@@ -69,18 +72,22 @@ struct Parcel {
     for (ParticleRow& row : p.particles) row = r.get<ParticleRow>();
     p.records.resize(r.get<std::uint64_t>());
     for (Record& rec : p.records) rec = r.get<Record>();
+    p.wall_records.resize(r.get<std::uint64_t>());
+    for (WallMemoryRecord& rec : p.wall_records) rec = r.get<WallMemoryRecord>();
     return p;
   }
 };
 }  // namespace
 
 MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, CarriedContacts& carried,
-                       const MemoryLayout& layout, std::size_t gid_limit) {
+                       std::vector<WallMemoryRecord>& wall_memories, const MemoryLayout& layout,
+                       std::size_t gid_limit) {
   const int me = slabs.rank(), lower = slabs.lower(), upper = slabs.upper();
   // Parcels to the neighbours below [0] and above [1]; one parcel if they are the same rank.
   Parcel parcel[2];
   const auto parcel_for = [&](int rank) -> Parcel& { return rank == lower ? parcel[0] : parcel[1]; };
   std::vector<char> owned_after(gid_limit, 0);
+  std::vector<int> destination(gid_limit, -1);
   std::vector<std::uint32_t> order, leaving;
   for (std::size_t i = 0; i < p.owned; ++i) {
     const int owner = slabs.owner_of(p.position[i][slabs.axis]);
@@ -94,7 +101,16 @@ MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, Carried
                                " to rank " + std::to_string(owner) + ", past a neighbour, between two rebuilds");
     parcel_for(owner).particles.push_back(row_of(p, i));
     leaving.push_back(static_cast<std::uint32_t>(i));
+    destination[p.gid[i]] = owner;
   }
+  std::vector<WallMemoryRecord> staying;
+  for (const WallMemoryRecord& r : wall_memories) {
+    if (destination[r.gid] < 0)
+      staying.push_back(r);
+    else
+      parcel_for(destination[r.gid]).wall_records.push_back(r);
+  }
+  wall_memories = std::move(staying);
 
   // Records of pairs this rank no longer holds wholly go to the neighbours, who may now list them.
   std::vector<Record> kept;
@@ -136,6 +152,7 @@ MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, Carried
       ++count.arrived;
     }
     kept.insert(kept.end(), in.records.begin(), in.records.end());
+    wall_memories.insert(wall_memories.end(), in.wall_records.begin(), in.wall_records.end());
   }
 
   // Every record keyed by a particle this rank owns (seen from it; memories change sign when

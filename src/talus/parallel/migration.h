@@ -9,6 +9,7 @@
 #include "talus/body/particles.h"
 #include "talus/collide/pair_list.h"
 #include "talus/parallel/slab_decomposition.h"
+#include "talus/world/wall_contacts.h"
 
 namespace talus {
 
@@ -18,7 +19,9 @@ struct MigrationCount {
 
 // Owned particles must be wrapped and ghosts dropped. A particle may move one slab per
 // rebuild (it moves less than half a skin between rebuilds, and slabs are wider).
+// `wall_memories` (keyed by global id) go with their particles and come with the arrivals.
 MigrationCount migrate(ParticleStore& particles, const SlabDecomposition& slabs, CarriedContacts& carried,
-                       const MemoryLayout& layout, std::size_t gid_limit);
+                       std::vector<WallMemoryRecord>& wall_memories, const MemoryLayout& layout,
+                       std::size_t gid_limit);
 
 }  // namespace talus

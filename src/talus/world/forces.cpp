@@ -234,6 +234,13 @@ void World::wall_forces(double memory_dt) {
   }
   std::fill(wall_force_.begin(), wall_force_.end(), Vec3{});
   for (std::size_t e = 0; e < list.entries(); ++e) wall_force_[list.wall(e)] += list.force_on_wall[e];
+  if (distributed()) {  // every rank knows the walls' totals (a gate's observer may read them)
+    std::vector<double> total(3 * wall_force_.size());
+    for (std::size_t w = 0; w < wall_force_.size(); ++w)
+      for (int a = 0; a < 3; ++a) total[3 * w + a] = wall_force_[w][a];
+    communicator().sum_in_place(total);
+    for (std::size_t w = 0; w < wall_force_.size(); ++w) wall_force_[w] = {total[3 * w], total[3 * w + 1], total[3 * w + 2]};
+  }
 }
 
 }  // namespace talus

@@ -10,6 +10,14 @@
 
 namespace talus {
 
+// The memory of one particle-wall contact, keyed by the particle's global id: what a particle
+// takes along when it moves to another rank (parallel/migration.h).
+struct WallMemoryRecord {
+  std::uint32_t gid = 0;
+  std::int32_t wall = 0;
+  Vec3 spring, normal_prev, rolling;
+};
+
 class WallContactList {
  public:
   void build(const ParticleStore& particles, const std::vector<Wall>& walls, double time, double skin,
@@ -18,6 +26,12 @@ class WallContactList {
   void transfer_memory(const WallContactList& old, const std::vector<std::uint32_t>& old_gid,
                        const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
                        std::vector<std::int64_t>* origin = nullptr);
+
+  // The memories of the entries in contact, keyed by global id (`gid` of this list's rows).
+  std::vector<WallMemoryRecord> carry(const std::vector<std::uint32_t>& gid) const;
+  // Hands `records` to the entries of this list built anew; records without an entry are dropped.
+  void restore_memory(const std::vector<WallMemoryRecord>& records, const std::vector<std::uint32_t>& gid,
+                      std::size_t gid_limit);
 
   std::uint32_t row_begin(std::size_t i) const { return row_[i]; }
   std::uint32_t row_end(std::size_t i) const { return row_[i + 1]; }

@@ -153,9 +153,12 @@ void World::rebuild() {
   CarriedContacts& carried = carried_;
   pairs_.carry(gid_at_build_, next_gid_, has_composites(), carried);
   pairs_.clear();
+  // A distributed world carries its wall memories by global id too, as particles change rank.
+  std::vector<WallMemoryRecord> wall_memories;
   if (distributed()) {
     ScopedPhase exchange(timer_, Phase::exchange);
-    migrated_ += migrate(p, slabs_, carried, memory_layout(), next_gid_).left;
+    wall_memories = wall_pairs_.carry(gid_at_build_);
+    migrated_ += migrate(p, slabs_, carried, wall_memories, memory_layout(), next_gid_).left;
   }
   const long owned = static_cast<long>(p.owned);
   grid_.setup(distributed() ? slab_grid_domain() : domain, p.position, p.owned, range,
@@ -228,7 +231,10 @@ void World::rebuild() {
   WallContactList old_walls = std::move(wall_pairs_);
   wall_pairs_ = WallContactList{};
   wall_pairs_.build(p, walls_, time_, skin_, layout);
-  wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
+  if (distributed())
+    wall_pairs_.restore_memory(wall_memories, p.gid, next_gid_);
+  else
+    wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
   if (has_composites()) wall_sub_ = wall_sub_.carried_to(wall_pairs_, origin);
   gid_at_build_ = p.gid;  // owned and ghost ids of this build, for the next transfer
   mark_step_ends();
