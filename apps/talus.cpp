@@ -69,17 +69,13 @@ std::filesystem::path results_dir_of(const std::filesystem::path& checkpoint) {
 
 int run_file(io::ScenarioFile& file, const std::string& label, std::string out, bool overwrite, bool quiet, int threads,
              const RunStart& run_start) {
-  // The engine runs spread over ranks (World::distribute), but a run's outputs and checkpoints
-  // are not yet written from several ranks: every rank would write the same files.
-  if (Communicator::world().size() > 1)
-    throw std::runtime_error("`talus run` and `talus resume` run on one rank: start them without mpirun (studies "
-                             "spread their cases over ranks: `mpirun talus sweep|ensemble|hstop|flowmap`)");
   Scenario scenario = load_scenario(file);
   RunOptions options;
   options.scenario_toml = file.to_toml();
   if (!run_start.restart.empty()) {
     auto checkpoint = std::make_shared<io::Checkpoint>(io::read_checkpoint(run_start.restart));
-    if (scenario_body(checkpoint->scenario_toml) != scenario_body(options.scenario_toml))
+    if (scenario_body(checkpoint->scenario_toml) != scenario_body(options.scenario_toml) &&
+        Communicator::world().rank() == 0)
       std::fprintf(stderr, "talus: note: %s differs from the scenario %s was written with; the run goes on with %s\n",
                    label.c_str(), run_start.restart.c_str(), label.c_str());
     const std::filesystem::path home = results_dir_of(run_start.restart);
@@ -106,7 +102,7 @@ int run_file(io::ScenarioFile& file, const std::string& label, std::string out, 
     std::fprintf(stderr, "talus: error: %s; state in %s\n", outcome.error.c_str(), outcome.state_file.c_str());
     return kBlowUpStatus;
   }
-  if (!quiet)
+  if (!quiet && Communicator::world().rank() == 0)
     std::fprintf(stderr, "talus: %s after %.1f s of wall time (%s); results in %s\n", outcome.stop_reason.c_str(),
                  outcome.wall_seconds, label.c_str(), out.c_str());
   return outcome.stop_reason == "interrupted" ? 130 : 0;

@@ -146,7 +146,7 @@ std::vector<SubContactList> read_points(const Hdf5Reader& h5, const std::string&
 void write_world(Hdf5Writer& h5, const WorldState& s) {
   const ParticleStore& p = s.particles;
   h5.write("world/counters", std::vector<std::uint64_t>{s.next_gid, s.steps, s.rebuilds,
-                                                       static_cast<std::uint64_t>(s.tangential_model)});
+                                                       static_cast<std::uint64_t>(s.tangential_model), s.ranks});
   h5.write("world/times", std::vector<double>{s.time, s.time_at_build, s.skin, s.gravity.x, s.gravity.y, s.gravity.z});
   h5.write("world/particles/position", flat(p.position), 3);
   h5.write("world/particles/velocity", flat(p.velocity), 3);
@@ -182,8 +182,12 @@ WorldState read_world(const Hdf5Reader& h5) {
   WorldState s;
   const std::vector<std::uint64_t> counters = h5.read_u64("world/counters");
   const std::vector<double> times = h5.read_double("world/times");
-  if (counters.size() != 4 || times.size() != 6 || counters[3] > static_cast<std::uint64_t>(TangentialModel::elastic_spring))
+  // A fifth counter, the ranks the state was gathered from, is absent from older files (one).
+  if (counters.size() < 4 || counters.size() > 5 || times.size() != 6 ||
+      counters[3] > static_cast<std::uint64_t>(TangentialModel::elastic_spring) ||
+      (counters.size() == 5 && counters[4] == 0))
     throw std::runtime_error(h5.path().string() + ": world counters damaged");
+  s.ranks = counters.size() == 5 ? counters[4] : 1;
   s.next_gid = static_cast<std::uint32_t>(counters[0]);
   s.steps = counters[1];
   s.rebuilds = counters[2];

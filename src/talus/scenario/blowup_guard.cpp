@@ -100,7 +100,55 @@ nlohmann::json particle_state(const ParticleStore& p, std::uint32_t i) {
 
 }  // namespace
 
+namespace {
+void put_text(ByteWriter& w, const std::string& text) {
+  w.put(static_cast<std::uint64_t>(text.size()));
+  for (const char c : text) w.put(c);
+}
+
+std::string get_text(ByteReader& r) {
+  std::string text(r.get<std::uint64_t>(), ' ');
+  for (char& c : text) c = r.get<char>();
+  return text;
+}
+
+// Every rank stops when one does, each with the report of the lowest rank that found the fault.
+std::optional<BlowUp> agree(const std::optional<BlowUp>& mine, const Communicator& comm) {
+  std::vector<std::byte> out;
+  ByteWriter w(out);
+  w.put(static_cast<std::uint8_t>(mine.has_value()));
+  if (mine) {
+    w.put(mine->step);
+    w.put(mine->time);
+    put_text(w, mine->quantity);
+    w.put(static_cast<std::uint64_t>(mine->particles.size()));
+    for (const std::uint32_t id : mine->particles) w.put(id);
+    put_text(w, mine->message);
+    put_text(w, mine->particle_states.dump());
+  }
+  const std::vector<std::byte> all = comm.all_gather(out);
+  ByteReader r(all);
+  while (!r.done()) {
+    if (!r.get<std::uint8_t>()) continue;
+    BlowUp b;
+    b.step = r.get<std::uint64_t>();
+    b.time = r.get<double>();
+    b.quantity = get_text(r);
+    for (auto n = r.get<std::uint64_t>(); n > 0; --n) b.particles.push_back(r.get<std::uint32_t>());
+    b.message = get_text(r);
+    b.particle_states = nlohmann::json::parse(get_text(r));
+    return b;
+  }
+  return std::nullopt;
+}
+}  // namespace
+
 std::optional<BlowUp> BlowUpGuard::check(World& world) {
+  std::optional<BlowUp> found = check_here(world);
+  return world.distributed() ? agree(found, world.communicator()) : found;
+}
+
+std::optional<BlowUp> BlowUpGuard::check_here(World& world) {
   const ParticleStore& p = world.particles();
   const double dt = world.settings().time_step;
   const unsigned faults = scan_state(p, world.settings().domain, dt);

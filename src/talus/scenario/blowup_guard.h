@@ -38,12 +38,14 @@ class BlowUpGuard {
   explicit BlowUpGuard(LeavePolicy on_leave) : on_leave_(on_leave) {}
   // Checks the world's state. With LeavePolicy::remove the particles that left the domain are
   // removed (and counted) unless something worse is wrong. Returns what must stop the run.
+  // A distributed world's ranks all stop if one finds a fault (removals are refused there).
   std::optional<BlowUp> check(World& world);
   // Particles removed so far, this run and the runs it was restarted from.
   std::uint64_t removed() const { return removed_; }
   void set_removed(std::uint64_t n) { removed_ = n; }  ///< from a checkpoint
 
  private:
+  std::optional<BlowUp> check_here(World& world);  ///< this rank's particles
   LeavePolicy on_leave_;
   std::uint64_t removed_ = 0;
 };

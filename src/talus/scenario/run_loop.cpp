@@ -19,7 +19,9 @@
 #include "talus/io/vtk_output.h"
 #include "talus/scenario/blowup_guard.h"
 #include "talus/scenario/checkpoint_series.h"
+#include "talus/parallel/communicator.h"
 #include "talus/scenario/run_checkpoint.h"
+#include "talus/scenario/spread_run.h"
 
 namespace talus {
 
@@ -78,9 +80,16 @@ class Progress {
     const double rate = elapsed > 0 ? w.step_count() / elapsed : 0;
     const double fraction = std::min(1.0, w.time() / end_time);
     const double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
-    std::fprintf(stderr, "%st = %.6g s (%5.1f %%)  %.0f steps/s  %zu particles  %zu contacts  ETA %.0f s%s",
-                 tty_ ? "\r" : "", w.time(), 100 * fraction, rate, w.owned_count(), w.diagnostics().contacts, eta,
-                 tty_ ? "   " : "\n");
+    // Only rank 0 of a distributed run reports progress: counts over the ranks would need the
+    // others to join at times only this process's clock decides.
+    if (w.distributed())
+      std::fprintf(stderr, "%st = %.6g s (%5.1f %%)  %.0f steps/s  %zu particles on rank 0 of %d  ETA %.0f s%s",
+                   tty_ ? "\r" : "", w.time(), 100 * fraction, rate, w.owned_count(), w.slabs().ranks(), eta,
+                   tty_ ? "   " : "\n");
+    else
+      std::fprintf(stderr, "%st = %.6g s (%5.1f %%)  %.0f steps/s  %zu particles  %zu contacts  ETA %.0f s%s",
+                   tty_ ? "\r" : "", w.time(), 100 * fraction, rate, w.owned_count(), w.diagnostics().contacts, eta,
+                   tty_ ? "   " : "\n");
     std::fflush(stderr);
   }
   void finish() {
@@ -100,7 +109,21 @@ void install_stop_handlers() {
   std::signal(SIGTERM, request_stop);
 }
 
-RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
+RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
+  // Under mpirun the run is spread over the ranks (World::distribute); every rank runs the loop,
+  // and its outputs, which read the whole system, are the same on every rank. Rank 0 writes
+  // them to the results folder, the others to a scratch folder removed at the end.
+  const Communicator& comm = Communicator::world();
+  const bool spread = comm.size() > 1;
+  RunOptions opt = options;
+  if (spread) check_spreadable(sc);
+  std::optional<ScratchFolder> scratch;
+  if (spread && comm.rank() > 0) {
+    scratch.emplace(opt.out, comm.rank());
+    opt.out = scratch->path();
+    opt.overwrite = true;
+    opt.quiet = true;
+  }
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   io::prepare_results_dir(opt.out, opt.overwrite);
   io::atomic_write(opt.out / "scenario.toml", opt.scenario_toml);
@@ -166,6 +189,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
     loop.next_output = world.time() + run.output_interval;
     loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
+  if (spread) world.distribute(comm);
   const std::uint64_t first_step = world.step_count();
   const double dt = world.settings().time_step;
   // Steps run in batches (World::run closes one step and opens the next in one pass over
@@ -245,7 +269,8 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   summary["final_time"] = world.time();
   summary["steps"] = world.step_count();
   summary["time_step"] = dt;
-  summary["particles"] = world.owned_count();
+  summary["particles"] = static_cast<std::uint64_t>(comm.sum(static_cast<double>(world.owned_count())));
+  summary["ranks"] = comm.size();
   summary["contacts"] = d.contacts;
   summary["wall_contacts"] = d.wall_contacts;
   summary["energies"] = diagnostics_json(d);
@@ -254,7 +279,8 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& opt) {
   summary["steps_per_second"] = outcome.wall_seconds > 0 ? steps_run / outcome.wall_seconds : 0.0;
   summary["threads"] = omp_get_max_threads();
   summary["neighbour_rebuilds"] = world.rebuilds();
-  // Where the wall time of this process went, by phase of the step (s); the rest is output,
+  if (spread) summary["particles_moved_between_ranks"] = comm.sum(static_cast<double>(world.particles_moved_between_ranks()));
+  // Where the wall time of rank 0 went, by phase of the step (s); the rest is output,
   // analyses and the run loop.
   nlohmann::json phases = nlohmann::json::object();
   for (int k = 0; k < static_cast<int>(Phase::count); ++k)

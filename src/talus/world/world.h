@@ -201,7 +201,9 @@ class World {
   double particle_skin(double largest_radius) const;  ///< m, the list's skin
   Domain slab_grid_domain() const;
   Diagnostics local_diagnostics() const;
-  Snapshot local_snapshot() const;  ///< of this rank's particles and the pairs it lists  ///< what this rank's grid covers in a distributed world
+  Snapshot local_snapshot() const;
+  void restore_by_global_ids(const WorldState& state);
+  void take_state_without_lists(const WorldState& state);  ///< the particles and counters; lists emptied  ///< restore_state of a state gathered from ranks  ///< of this rank's particles and the pairs it lists  ///< what this rank's grid covers in a distributed world
   MemoryLayout memory_layout() const;
 
   WorldSettings settings_;

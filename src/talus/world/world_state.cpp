@@ -43,6 +43,58 @@ void check_particles(const ParticleStore& p, int species, std::size_t shapes, st
   }
 }
 
+// Appends the vectors' values to `out`, each after its length.
+struct StatePacker {
+  ByteWriter w;
+  template <class T> void put(const std::vector<T>& v) {
+    w.put(static_cast<std::uint64_t>(v.size()));
+    for (const T& x : v) w.put(x);
+  }
+};
+
+template <class T>
+void take(ByteReader& r, std::vector<T>& v) {
+  for (auto n = r.get<std::uint64_t>(); n > 0; --n) v.push_back(r.get<T>());
+}
+
+// The pieces of every rank joined, rank after rank, on every rank.
+void join_pieces(WorldState& s, const Communicator& comm) {
+  std::vector<std::byte> mine;
+  StatePacker out{ByteWriter(mine)};
+  const ParticleStore& p = s.particles;
+  out.put(p.position), out.put(p.velocity), out.put(p.angular_velocity), out.put(p.force), out.put(p.torque);
+  out.put(p.orientation), out.put(p.radius), out.put(p.inv_mass), out.put(p.inv_inertia), out.put(p.mass);
+  out.put(p.species), out.put(p.shape), out.put(p.gid), out.put(s.position_at_build);
+  out.put(s.pair_gid_i), out.put(s.pair_gid_j);
+  out.put(s.pair_memory.spring), out.put(s.pair_memory.normal_prev), out.put(s.pair_memory.rolling);
+  out.put(s.wall_gid), out.put(s.wall_index), out.put(s.wall_entry_force);
+  out.put(s.wall_memory.spring), out.put(s.wall_memory.normal_prev), out.put(s.wall_memory.rolling);
+  const std::vector<std::byte> all = comm.all_gather(mine);
+  WorldState j;
+  ParticleStore& q = j.particles;
+  ByteReader in(all);
+  while (!in.done()) {
+    take(in, q.position), take(in, q.velocity), take(in, q.angular_velocity), take(in, q.force), take(in, q.torque);
+    take(in, q.orientation), take(in, q.radius), take(in, q.inv_mass), take(in, q.inv_inertia), take(in, q.mass);
+    take(in, q.species), take(in, q.shape), take(in, q.gid), take(in, j.position_at_build);
+    take(in, j.pair_gid_i), take(in, j.pair_gid_j);
+    take(in, j.pair_memory.spring), take(in, j.pair_memory.normal_prev), take(in, j.pair_memory.rolling);
+    take(in, j.wall_gid), take(in, j.wall_index), take(in, j.wall_entry_force);
+    take(in, j.wall_memory.spring), take(in, j.wall_memory.normal_prev), take(in, j.wall_memory.rolling);
+  }
+  q.owned = q.position.size();
+  s.particles = std::move(q);
+  s.position_at_build = std::move(j.position_at_build);
+  s.pair_gid_i = std::move(j.pair_gid_i);
+  s.pair_gid_j = std::move(j.pair_gid_j);
+  s.pair_memory = std::move(j.pair_memory);
+  s.wall_gid = std::move(j.wall_gid);
+  s.wall_index = std::move(j.wall_index);
+  s.wall_entry_force = std::move(j.wall_entry_force);
+  s.wall_memory = std::move(j.wall_memory);
+  s.ranks = static_cast<std::uint64_t>(comm.size());
+}
+
 }  // namespace
 
 WorldState World::capture_state() {
@@ -77,6 +129,7 @@ WorldState World::capture_state() {
   s.wall_memory = wall_pairs_.memory;
   s.wall_entry_force = wall_pairs_.force_on_wall;
   s.wall_sub = wall_sub_.lists();
+  if (distributed()) join_pieces(s, communicator());
   return s;
 }
 
@@ -88,20 +141,14 @@ void World::restore_state(const WorldState& s) {
   for (const Wall& w : s.walls)
     require(w.material >= 0 && w.material < table_.wall_materials(), "wall material not in the scenario");
   require(s.skin > 0, "neighbour-list skin must be positive");
+  require(!distributed(), "a distributed world is restored before it is spread over the ranks");
+  if (s.ranks > 1) {
+    restore_by_global_ids(s);
+    return;
+  }
 
   // Replay the last build: same positions, same order, same constants give the same lists.
-  particles_ = s.particles;
-  next_gid_ = s.next_gid;
-  steps_ = s.steps;
-  settings_.gravity = s.gravity;
-  settings_.tangential_model = s.tangential_model;
-  walls_ = s.walls;
-  skin_ = s.skin;
-  pairs_ = PairList{};
-  wall_pairs_ = WallContactList{};
-  pair_sub_.clear();
-  wall_sub_.clear();
-  gid_at_build_.clear();
+  take_state_without_lists(s);
   particles_.position = s.position_at_build;
   time_ = s.time_at_build;
   rebuild();
@@ -143,6 +190,65 @@ void World::restore_state(const WorldState& s) {
   wall_pairs_.force_on_wall = s.wall_entry_force;
   require(s.wall_sub.size() == wall_sub_.entries(), "wall contact points of rigid bodies do not match the wall list");
   if (has_composites()) wall_sub_.assign(wall_pairs_, s.wall_sub);
+  ready_ = true;
+}
+
+void World::take_state_without_lists(const WorldState& s) {
+  particles_ = s.particles;
+  next_gid_ = s.next_gid;
+  steps_ = s.steps;
+  settings_.gravity = s.gravity;
+  settings_.tangential_model = s.tangential_model;
+  walls_ = s.walls;
+  skin_ = s.skin;
+  pairs_ = PairList{};
+  wall_pairs_ = WallContactList{};
+  pair_sub_.clear();
+  wall_sub_.clear();
+  gid_at_build_.clear();
+}
+
+void World::restore_by_global_ids(const WorldState& s) {
+  require(!has_composites(), "rigid bodies of several parts are restored from one rank's checkpoints only");
+  take_state_without_lists(s);
+  time_ = s.time;
+  wall_force_ = s.wall_force;
+  rebuild();  // owned forces stay those of the end of the last step
+  rebuilds_ = s.rebuilds;
+
+  // The stored entries as carried memories, keyed by their row's global id.
+  const MemoryLayout layout = memory_layout();
+  const std::size_t n = s.pair_gid_i.size();
+  const auto fits = [n](const std::vector<Vec3>& stored, bool kept) { return n == 0 || (stored.size() == n) == kept; };
+  require(s.pair_gid_j.size() == n && fits(s.pair_memory.spring, layout.spring) &&
+              fits(s.pair_memory.normal_prev, layout.normal_prev) && fits(s.pair_memory.rolling, layout.rolling),
+          "particle contact memory does not fit the scenario's contact model");
+  CarriedContacts carried;
+  carried.start.assign(next_gid_ + std::size_t{1}, 0);
+  for (std::size_t e = 0; e < n; ++e) {
+    require(s.pair_gid_i[e] < next_gid_ && s.pair_gid_j[e] < next_gid_, "contact of an unknown particle");
+    ++carried.start[s.pair_gid_i[e] + 1];
+  }
+  for (std::size_t a = 0; a < next_gid_; ++a) carried.start[a + 1] += carried.start[a];
+  carried.other.resize(n);
+  carried.memory.resize_for_overwrite(n, layout);
+  std::vector<std::uint32_t> fill(carried.start.begin(), carried.start.end() - 1);
+  for (std::size_t e = 0; e < n; ++e) {
+    const std::uint32_t k = fill[s.pair_gid_i[e]]++;
+    carried.other[k] = s.pair_gid_j[e];
+    if (layout.spring && !s.pair_memory.spring.empty()) carried.memory.spring[k] = s.pair_memory.spring[e];
+    if (layout.normal_prev && !s.pair_memory.normal_prev.empty()) carried.memory.normal_prev[k] = s.pair_memory.normal_prev[e];
+    if (layout.rolling && !s.pair_memory.rolling.empty()) carried.memory.rolling[k] = s.pair_memory.rolling[e];
+  }
+  pairs_.restore_memory(carried, particles_.gid);
+
+  std::vector<WallMemoryRecord> walls;
+  const auto at = [](const std::vector<Vec3>& v, std::size_t e) { return v.empty() ? Vec3{} : v[e]; };
+  require(s.wall_index.size() == s.wall_gid.size(), "wall contacts damaged");
+  for (std::size_t e = 0; e < s.wall_gid.size(); ++e)
+    walls.push_back({s.wall_gid[e], s.wall_index[e], at(s.wall_memory.spring, e), at(s.wall_memory.normal_prev, e),
+                     at(s.wall_memory.rolling, e)});
+  wall_pairs_.restore_memory(walls, particles_.gid, next_gid_);
   ready_ = true;
 }
 

@@ -21,8 +21,13 @@
 namespace talus {
 
 struct WorldState {
-  // Owned particles, in their current order (ghosts are derived).
+  // Owned particles, in their current order (ghosts are derived); those of a distributed world
+  // rank after rank.
   ParticleStore particles;
+  // The ranks the state was gathered from. Above 1 the particles are in no single build's
+  // order: a restore builds the lists afresh and finds each memory by the global ids of its
+  // pair, so the run goes on to round-off, not to the bit.
+  std::uint64_t ranks = 1;
   std::uint32_t next_gid = 0;
   double time = 0;                  ///< s
   std::uint64_t steps = 0;
