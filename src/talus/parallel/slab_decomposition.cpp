@@ -41,7 +41,9 @@ SlabDecomposition SlabDecomposition::balanced(const Communicator& comm, const Do
   // A slab narrower than the interaction range would need ghosts from beyond its neighbour.
   for (int r = 1; r < ranks; ++r) cut[r] = std::max(cut[r], cut[r - 1] + min_width);
   for (int r = ranks - 1; r >= 1; --r) cut[r] = std::min(cut[r], cut[r + 1] - min_width);
-  return with_cuts(comm, domain, axis, std::move(cut), min_width);
+  SlabDecomposition d = with_cuts(comm, domain, axis, std::move(cut), min_width);
+  d.rebalance = true;
+  return d;
 }
 
 SlabDecomposition SlabDecomposition::with_cuts(const Communicator& comm, const Domain& domain, int axis,
@@ -52,6 +54,7 @@ SlabDecomposition SlabDecomposition::with_cuts(const Communicator& comm, const D
   d.periodic = domain.periodic[axis];
   d.length = domain.length(axis);
   d.cut = std::move(cut);
+  d.min_width = min_width;
   const int ranks = comm.size();
   if (d.ranks() != ranks)
     throw std::runtime_error(std::to_string(d.cut.size()) + " cuts for " + std::to_string(ranks) +
@@ -66,6 +69,53 @@ SlabDecomposition SlabDecomposition::with_cuts(const Communicator& comm, const D
                                " is narrower than the interaction range (" + std::to_string(min_width) +
                                " m): run on fewer ranks");
   return d;
+}
+
+bool SlabDecomposition::rebalance_by_count(const std::vector<double>& coordinate, double tolerance) {
+  const int n_ranks = ranks();
+  if (!rebalance || n_ranks < 2) return false;
+  const double owned = static_cast<double>(coordinate.size());
+  const double total = comm->sum(owned);
+  if (!(comm->max(owned) > tolerance * total / n_ranks)) return false;
+  // A histogram of all particles along the axis, the same on every rank (sums of whole
+  // numbers are exact), and cuts at its quantiles.
+  double lo = cut.front(), hi = cut.back();
+  if (!periodic) {
+    double mn = std::numeric_limits<double>::infinity(), mx = -mn;
+    for (const double x : coordinate) mn = std::min(mn, x), mx = std::max(mx, x);
+    lo = -comm->max(-mn);
+    hi = comm->max(mx);
+  }
+  if (!(hi > lo)) return false;
+  constexpr int kBins = 4096;
+  std::vector<double> histogram(kBins, 0.0);
+  const double width = (hi - lo) / kBins;
+  for (const double x : coordinate)
+    histogram[std::clamp(static_cast<int>((x - lo) / width), 0, kBins - 1)] += 1;
+  comm->sum_in_place(histogram);
+  std::vector<double> next = cut;
+  double below = 0;
+  int bin = 0;
+  for (int r = 1; r < n_ranks; ++r) {
+    const double share = total * r / n_ranks;
+    while (bin < kBins && below + histogram[bin] < share) below += histogram[bin++];
+    next[r] = lo + width * bin;
+  }
+  // Each cut strictly between its neighbours' old places and the slabs no narrower than the
+  // interaction range; where that cannot be, the cut stays.
+  bool moved = false;
+  for (int r = 1; r < n_ranks; ++r) {
+    const double low = std::max(cut[r - 1], next[r - 1]) + min_width, high = cut[r + 1] - min_width;
+    const double c = std::clamp(next[r], low, high);
+    if (!(low <= high) || c == cut[r]) {
+      next[r] = cut[r];
+      continue;
+    }
+    next[r] = c;
+    moved = true;
+  }
+  cut = next;
+  return moved;
 }
 
 }  // namespace talus

@@ -18,6 +18,8 @@ struct SlabDecomposition {
   std::vector<double> cut;  ///< m, size() + 1 values; -inf and +inf at the ends of a non-periodic axis
   bool periodic = false;    ///< the axis is periodic: rank 0's lower neighbour is the last rank
   double length = 0;        ///< m, the box's length along a periodic axis
+  double min_width = 0;     ///< m, the interaction range: no slab is narrower
+  bool rebalance = false;   ///< the cuts follow the particles (rebalance_by_count)
 
   int ranks() const { return static_cast<int>(cut.size()) - 1; }
   int rank() const { return comm->rank(); }
@@ -29,13 +31,20 @@ struct SlabDecomposition {
   int owner_of(double x) const;  ///< the rank whose slab holds coordinate x (wrapped)
 
   // Cuts that give every rank the same number of the particles at `coordinate` (the whole
-  // system, known to every rank at the start), each slab at least `min_width` wide.
+  // system, known to every rank at the start), each slab at least `min_width` wide; they
+  // follow the particles later (rebalance = true).
   static SlabDecomposition balanced(const Communicator& comm, const Domain& domain, int axis,
                                     std::vector<double> coordinate, double min_width);
   // The slabs [cut[r], cut[r + 1]) given, one per rank: ascending, at least `min_width` wide,
-  // from face to face of a periodic axis (from -inf to +inf along another).
+  // from face to face of a periodic axis (from -inf to +inf along another). They stay.
   static SlabDecomposition with_cuts(const Communicator& comm, const Domain& domain, int axis,
                                      std::vector<double> cut, double min_width);
+
+  // Moves the cuts towards equal particle counts when the fullest rank holds more than
+  // `tolerance` times the mean (collective; `coordinate` of this rank's particles). Each cut
+  // stays strictly between its neighbours' old places, so a particle changes rank by one slab
+  // at most (migrate), and repeated rebuilds converge. Returns whether the cuts moved.
+  bool rebalance_by_count(const std::vector<double>& coordinate, double tolerance = 1.1);
 };
 
 }  // namespace talus

@@ -158,6 +158,9 @@ void World::rebuild() {
   if (distributed()) {
     ScopedPhase exchange(timer_, Phase::exchange);
     wall_memories = wall_pairs_.carry(gid_at_build_);
+    std::vector<double> coordinate(p.owned);
+    for (std::size_t i = 0; i < p.owned; ++i) coordinate[i] = p.position[i][slabs_.axis];
+    slabs_.rebalance_by_count(coordinate);
     migrated_ += migrate(p, slabs_, carried, wall_memories, memory_layout(), next_gid_).left;
   }
   const long owned = static_cast<long>(p.owned);
