@@ -1,6 +1,7 @@
 #pragma once
 // Periodic images as ghost particles: copies of owned particles near a periodic face, shifted
-// by one box length. The same mechanism will carry subdomain neighbours under MPI.
+// by one box length. In a distributed world the images along the slab axis come from the halo
+// exchange instead (parallel/halo_exchange.h), which sends these images along too.
 #include <cstdint>
 #include <vector>
 
