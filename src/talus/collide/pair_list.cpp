@@ -349,6 +349,29 @@ void PairList::carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limi
   }
 }
 
+CarriedRecord carried_record(const CarriedContacts& c, std::uint32_t a, std::size_t k) {
+  const auto at = [k](const std::vector<Vec3>& v) { return v.empty() ? Vec3{} : v[k]; };
+  return {a, c.other[k], at(c.memory.spring), at(c.memory.normal_prev), at(c.memory.rolling)};
+}
+
+void group_records(const std::vector<CarriedRecord>& records, std::size_t gid_limit, const MemoryLayout& layout,
+                   CarriedContacts& c) {
+  c.start.assign(gid_limit + 1, 0);
+  for (const CarriedRecord& r : records) ++c.start[r.a + 1];
+  for (std::size_t a = 0; a < gid_limit; ++a) c.start[a + 1] += c.start[a];
+  c.other.resize(records.size());
+  c.entry.clear();
+  c.memory.resize_for_overwrite(records.size(), layout);
+  std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
+  for (const CarriedRecord& r : records) {
+    const std::uint32_t k = fill[r.a]++;
+    c.other[k] = r.b;
+    if (layout.spring) c.memory.spring[k] = r.spring;
+    if (layout.normal_prev) c.memory.normal_prev[k] = r.normal_prev;
+    if (layout.rolling) c.memory.rolling[k] = r.rolling;
+  }
+}
+
 std::size_t CarriedContacts::bytes() const {
   return (start.capacity() + other.capacity() + entry.capacity()) * 4 +
          (memory.spring.capacity() + memory.normal_prev.capacity() + memory.rolling.capacity()) * sizeof(Vec3);

@@ -50,6 +50,20 @@ struct CarriedContacts {
   std::size_t bytes() const;  ///< memory held
 };
 
+// One carried memory as plain data: the pair's global ids (a, b) and its memory seen from a.
+// What crosses between ranks and what a checkpoint gathered from ranks holds.
+struct CarriedRecord {
+  std::uint32_t a = 0, b = 0;
+  Vec3 spring, normal_prev, rolling;
+};
+
+// Record k of `carried`, whose key is global id a.
+CarriedRecord carried_record(const CarriedContacts& carried, std::uint32_t a, std::size_t k);
+// `records` grouped by their key a into `carried`, as PairList::carry makes them (no entries of
+// origin). Keys must be below `gid_limit`; memories the layout does not keep are dropped.
+void group_records(const std::vector<CarriedRecord>& records, std::size_t gid_limit, const MemoryLayout& layout,
+                   CarriedContacts& carried);
+
 class PairList {
  public:
   // Builds the list over owned particles (sorted by slab) and ghosts; pairs whose bounding

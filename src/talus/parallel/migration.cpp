@@ -8,11 +8,6 @@ namespace talus {
 namespace {
 constexpr int kMigrateTag = 110;
 
-struct Record {
-  std::uint32_t a, b;
-  Vec3 spring, normal_prev, rolling;
-};
-
 struct ParticleRow {
   Vec3 position, velocity, angular_velocity, force, torque;
   Quat orientation;
@@ -43,15 +38,10 @@ void put_row(ParticleStore& p, std::size_t i, const ParticleRow& r) {
   p.gid[i] = r.gid;
 }
 
-Record record_of(const CarriedContacts& c, std::uint32_t a, std::size_t k) {
-  const auto at = [k](const std::vector<Vec3>& v) { return v.empty() ? Vec3{} : v[k]; };
-  return {a, c.other[k], at(c.memory.spring), at(c.memory.normal_prev), at(c.memory.rolling)};
-}
-
 // What goes to one neighbour: the particles entering its slab, then the records.
 struct Parcel {
   std::vector<ParticleRow> particles;
-  std::vector<Record> records;
+  std::vector<CarriedRecord> records;
   std::vector<WallMemoryRecord> wall_records;
   std::vector<std::byte> bytes() const {
     std::vector<std::byte> out;
@@ -59,7 +49,7 @@ struct Parcel {
     w.put(static_cast<std::uint64_t>(particles.size()));
     for (const ParticleRow& r : particles) w.put(r);
     w.put(static_cast<std::uint64_t>(records.size()));
-    for (const Record& r : records) w.put(r);
+    for (const CarriedRecord& r : records) w.put(r);
     w.put(static_cast<std::uint64_t>(wall_records.size()));
     for (const WallMemoryRecord& r : wall_records) w.put(r);
     return out;
@@ -71,7 +61,7 @@ struct Parcel {
     p.particles.resize(r.get<std::uint64_t>());
     for (ParticleRow& row : p.particles) row = r.get<ParticleRow>();
     p.records.resize(r.get<std::uint64_t>());
-    for (Record& rec : p.records) rec = r.get<Record>();
+    for (CarriedRecord& rec : p.records) rec = r.get<CarriedRecord>();
     p.wall_records.resize(r.get<std::uint64_t>());
     for (WallMemoryRecord& rec : p.wall_records) rec = r.get<WallMemoryRecord>();
     return p;
@@ -113,15 +103,12 @@ MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, Carried
   wall_memories = std::move(staying);
 
   // Records of pairs this rank no longer holds wholly go to the neighbours, who may now list them.
-  std::vector<Record> kept;
+  std::vector<CarriedRecord> kept;
   for (std::uint32_t a = 0; a < gid_limit; ++a)
     for (std::uint32_t k = carried.start[a]; k < carried.start[a + 1]; ++k) {
-      const Record r = record_of(carried, a, k);
-      if (owned_after[r.a] && owned_after[r.b]) {
-        kept.push_back(r);
-        continue;
-      }
+      const CarriedRecord r = carried_record(carried, a, k);
       if (owned_after[r.a] || owned_after[r.b]) kept.push_back(r);
+      if (owned_after[r.a] && owned_after[r.b]) continue;
       if (lower >= 0 && lower != me) parcel[0].records.push_back(r);
       if (upper >= 0 && upper != me && upper != lower) parcel[1].records.push_back(r);
     }
@@ -157,29 +144,16 @@ MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, Carried
 
   // Every record keyed by a particle this rank owns (seen from it; memories change sign when
   // seen from the other body), the others dropped; then grouped by key as carry() makes them.
-  std::vector<std::uint32_t> start(gid_limit + 1, 0);
   std::size_t n = 0;
-  for (Record& r : kept) {
+  for (CarriedRecord& r : kept) {
     if (!owned_after[r.a]) {
       if (!owned_after[r.b]) continue;
       r = {r.b, r.a, -1.0 * r.spring, -1.0 * r.normal_prev, -1.0 * r.rolling};
     }
     kept[n++] = r;
-    ++start[r.a + 1];
   }
   kept.resize(n);
-  for (std::size_t a = 0; a < gid_limit; ++a) start[a + 1] += start[a];
-  carried.start = start;
-  carried.other.resize(n);
-  carried.entry.clear();
-  carried.memory.resize_for_overwrite(n, layout);
-  for (const Record& r : kept) {
-    const std::uint32_t k = start[r.a]++;
-    carried.other[k] = r.b;
-    if (layout.spring) carried.memory.spring[k] = r.spring;
-    if (layout.normal_prev) carried.memory.normal_prev[k] = r.normal_prev;
-    if (layout.rolling) carried.memory.rolling[k] = r.rolling;
-  }
+  group_records(kept, gid_limit, layout, carried);
   return count;
 }
 

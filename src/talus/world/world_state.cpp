@@ -223,27 +223,18 @@ void World::restore_by_global_ids(const WorldState& s) {
   require(s.pair_gid_j.size() == n && fits(s.pair_memory.spring, layout.spring) &&
               fits(s.pair_memory.normal_prev, layout.normal_prev) && fits(s.pair_memory.rolling, layout.rolling),
           "particle contact memory does not fit the scenario's contact model");
-  CarriedContacts carried;
-  carried.start.assign(next_gid_ + std::size_t{1}, 0);
+  std::vector<CarriedRecord> records(n);
+  const auto at = [](const std::vector<Vec3>& v, std::size_t e) { return v.empty() ? Vec3{} : v[e]; };
   for (std::size_t e = 0; e < n; ++e) {
     require(s.pair_gid_i[e] < next_gid_ && s.pair_gid_j[e] < next_gid_, "contact of an unknown particle");
-    ++carried.start[s.pair_gid_i[e] + 1];
+    records[e] = {s.pair_gid_i[e], s.pair_gid_j[e], at(s.pair_memory.spring, e), at(s.pair_memory.normal_prev, e),
+                  at(s.pair_memory.rolling, e)};
   }
-  for (std::size_t a = 0; a < next_gid_; ++a) carried.start[a + 1] += carried.start[a];
-  carried.other.resize(n);
-  carried.memory.resize_for_overwrite(n, layout);
-  std::vector<std::uint32_t> fill(carried.start.begin(), carried.start.end() - 1);
-  for (std::size_t e = 0; e < n; ++e) {
-    const std::uint32_t k = fill[s.pair_gid_i[e]]++;
-    carried.other[k] = s.pair_gid_j[e];
-    if (layout.spring && !s.pair_memory.spring.empty()) carried.memory.spring[k] = s.pair_memory.spring[e];
-    if (layout.normal_prev && !s.pair_memory.normal_prev.empty()) carried.memory.normal_prev[k] = s.pair_memory.normal_prev[e];
-    if (layout.rolling && !s.pair_memory.rolling.empty()) carried.memory.rolling[k] = s.pair_memory.rolling[e];
-  }
+  CarriedContacts carried;
+  group_records(records, next_gid_, layout, carried);
   pairs_.restore_memory(carried, particles_.gid);
 
   std::vector<WallMemoryRecord> walls;
-  const auto at = [](const std::vector<Vec3>& v, std::size_t e) { return v.empty() ? Vec3{} : v[e]; };
   require(s.wall_index.size() == s.wall_gid.size(), "wall contacts damaged");
   for (std::size_t e = 0; e < s.wall_gid.size(); ++e)
     walls.push_back({s.wall_gid[e], s.wall_index[e], at(s.wall_memory.spring, e), at(s.wall_memory.normal_prev, e),
