@@ -184,7 +184,11 @@ std::unique_ptr<World> load_state(const ChuteCase& c, const std::filesystem::pat
   return load_state(make_empty_chute_world(c.setup), file);
 }
 
-std::unique_ptr<World> load_state(std::unique_ptr<World> world, const std::filesystem::path& file) {
+namespace {
+
+// Adds the file's particles to `world`, once per tile, each copy shifted by whole tiles of
+// `tile` (x, y); returns the state's time.
+double add_saved_particles(World& world, const std::filesystem::path& file, int tiles_x, int tiles_y, Vec3 tile) {
   Reader r(file);
   char magic[8];
   for (char& ch : magic) r.get(ch);
@@ -197,9 +201,10 @@ std::unique_ptr<World> load_state(std::unique_ptr<World> world, const std::files
   r.get(time);
   r.get(n);
 
-  world->reserve_particles(n);
+  std::vector<ParticleInit> inits(n);
+  std::vector<Vec3> inv_inertias(n);
   for (std::uint64_t k = 0; k < n; ++k) {
-    ParticleInit init;
+    ParticleInit& init = inits[k];
     Vec3 inv_inertia;
     std::uint8_t fixed;
     r.get(init.position);
@@ -215,15 +220,40 @@ std::unique_ptr<World> load_state(std::unique_ptr<World> world, const std::files
     init.fixed = fixed != 0;
     const Vec3& ii = inv_inertia;
     init.inertia = init.fixed ? Vec3{1, 1, 1} : Vec3{1 / ii.x, 1 / ii.y, 1 / ii.z};  // ignored when fixed
-    world->add_particle(init);
-    // add_particle inverts the inertia again; restore the cached inverse bit for bit.
-    world->particles_mutable().inv_inertia[k] = inv_inertia;
+    inv_inertias[k] = inv_inertia;
   }
   const std::uint64_t computed = r.sum();
   std::uint64_t stored;
   r.raw(stored);
   if (computed != stored) throw std::runtime_error("chute cache: checksum mismatch in " + file.string());
-  world->set_time(time);
+
+  world.reserve_particles(n * static_cast<std::size_t>(tiles_x * tiles_y));
+  for (int tx = 0; tx < tiles_x; ++tx)
+    for (int ty = 0; ty < tiles_y; ++ty)
+      for (std::uint64_t k = 0; k < n; ++k) {
+        ParticleInit init = inits[k];
+        init.position += Vec3{tx * tile.x, ty * tile.y, 0};
+        const std::uint32_t i = world.add_particle(init);
+        // add_particle inverts the inertia again; restore the cached inverse bit for bit.
+        world.particles_mutable().inv_inertia[i] = inv_inertias[k];
+      }
+  return time;
+}
+
+}  // namespace
+
+std::unique_ptr<World> load_state(std::unique_ptr<World> world, const std::filesystem::path& file) {
+  world->set_time(add_saved_particles(*world, file, 1, 1, Vec3{}));
+  return world;
+}
+
+std::unique_ptr<World> load_state_tiled(const ChuteCase& c, const std::filesystem::path& file, int tiles_x,
+                                        int tiles_y) {
+  ChuteSetup large = c.setup;
+  large.length *= tiles_x;
+  large.width *= tiles_y;
+  auto world = make_empty_chute_world(large);
+  world->set_time(add_saved_particles(*world, file, tiles_x, tiles_y, Vec3{c.setup.length, c.setup.width, 0}));
   return world;
 }
 

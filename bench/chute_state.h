@@ -41,6 +41,12 @@ std::unique_ptr<World> load_state(const ChuteCase& c, const std::filesystem::pat
 // The same into any empty world with the settings, shapes and contact table of the saved one.
 std::unique_ptr<World> load_state(std::unique_ptr<World> empty, const std::filesystem::path& file);
 
+// The case's state repeated tiles_x x tiles_y times over a base that many times longer and wider:
+// the chute is periodic along both, so the copies join into one flowing state of the larger
+// chute at once (the 10^6-sphere runs, which could not be flowed from rest in minutes).
+std::unique_ptr<World> load_state_tiled(const ChuteCase& c, const std::filesystem::path& file, int tiles_x,
+                                        int tiles_y);
+
 // The cached world of a case, generating the cache first if needed (build_chute, then run
 // until t = flow_time on `threads` OpenMP threads; progress goes to stderr).
 std::unique_ptr<World> load_or_generate(const ChuteCase& c, const std::filesystem::path& dir, int threads,
