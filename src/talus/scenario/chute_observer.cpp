@@ -1,8 +1,9 @@
 // The chute study as a RunObserver: energies at every output step for the flow state (Weinhart
 // et al. 2012, Sect. 6), snapshots every t_c/2 inside the averaging window coarse-grained into
 // depth profiles (Eq. 43), and at the end the profiles, the closure quantities and the balance
-// checks (Sect. 7) in chute_profile*.csv and summary.json; `talus analyze` redoes the profiles from
-// saved snapshot files.
+// checks (Sect. 7) in chute_profile*.csv and summary.json, and the depth averages of each
+// snapshot by blocks of time in chute_series.csv; `talus analyze` redoes the profiles from saved
+// snapshot files.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include "talus/analysis/cg_fields_json.h"
 #include "talus/analysis/cg_time_average.h"
 #include "talus/analysis/chute_depth_summary.h"
+#include "talus/analysis/chute_series.h"
 #include "talus/analysis/coarse_grain.h"
 #include "talus/io/snapshot_file.h"
 #include "talus/scenario/chute_profile_csv.h"
@@ -34,7 +36,7 @@ std::string profile_name(std::size_t k, double width) {
 
 class ChuteObserver final : public RunObserver {
  public:
-  explicit ChuteObserver(const ChuteStudyConfig& c) : c_(c) {
+  explicit ChuteObserver(const ChuteStudyConfig& c) : c_(c), series_(c.series_interval) {
     if (!c_.coarse_grain) return;
     std::vector<double> widths = {c_.width};
     widths.insert(widths.end(), c_.extra_widths.begin(), c_.extra_widths.end());
@@ -97,6 +99,7 @@ class ChuteObserver final : public RunObserver {
     if (files.empty())
       throw std::runtime_error(dir.string() + ": no snapshots to coarse-grain (run with run.snapshot_interval > 0)");
     for (WidthAverage& w : widths_) w.average = {};
+    series_ = ChuteSeries(c_.series_interval);
     cg_seconds_ = 0;
     Snapshot last;
     const double tolerance = 0.5 * c_.time_step;
@@ -125,7 +128,8 @@ class ChuteObserver final : public RunObserver {
       avg.push_back({{"count", w.average.count()},
                      {"sum", w.average.count() > 0 ? to_json(w.average.sum()) : nlohmann::json(nullptr)}});
     return {{"energies", e},         {"next_snapshot", next_snapshot_}, {"averages", avg},
-            {"first", {first_time_, first_px_}}, {"last", {last_time_, last_px_}}, {"cg_seconds", cg_seconds_}};
+            {"first", {first_time_, first_px_}}, {"last", {last_time_, last_px_}}, {"cg_seconds", cg_seconds_},
+            {"series", series_.state()}};
   }
 
   void restore(const nlohmann::json& j) override {
@@ -143,6 +147,8 @@ class ChuteObserver final : public RunObserver {
     last_time_ = j.at("last").at(0).get<double>();
     last_px_ = j.at("last").at(1).get<double>();
     cg_seconds_ = j.at("cg_seconds").get<double>();
+    series_ = ChuteSeries(c_.series_interval);
+    if (j.contains("series")) series_.restore(j.at("series"));  // checkpoints written before the series had none
   }
 
  private:
@@ -150,11 +156,25 @@ class ChuteObserver final : public RunObserver {
   void add_snapshot(const Snapshot& snap) {
     const auto t0 = std::chrono::steady_clock::now();
     const CgGrid grid = CgGrid::depth(c_.z_min, c_.z_max, c_.points);
-    for (WidthAverage& w : widths_) w.average.add(coarse_grain(snap, grid, w.function));
+    CgFields first;
+    for (WidthAverage& w : widths_) {
+      CgFields fields = coarse_grain(snap, grid, w.function);
+      w.average.add(fields);
+      if (&w == &widths_.front()) first = std::move(fields);
+    }
     // Downslope momentum of the flow, for the mean acceleration over the window.
-    double px = 0;
+    double px = 0, mass = 0;
     for (const ParticleRecord& p : snap.particles)
-      if (!p.fixed) px += p.mass * p.velocity.x;
+      if (!p.fixed) {
+        px += p.mass * p.velocity.x;
+        mass += p.mass;
+      }
+    try {
+      const double area = (snap.domain_max.x - snap.domain_min.x) * (snap.domain_max.y - snap.domain_min.y);
+      series_.add(snap.time, summarize_chute_profile(first, snap.gravity, c_.particle_density, c_.diameter, mass / area));
+    } catch (const std::invalid_argument&) {
+      // A snapshot without a flow surface on the grid (a grain flying off) has no depth averages.
+    }
     if (widths_.front().average.count() == 1) {
       first_time_ = snap.time;
       first_px_ = px;
@@ -211,6 +231,10 @@ class ChuteObserver final : public RunObserver {
       for (std::size_t k = 0; k < widths_.size(); ++k)
         write_chute_profile_csv(out / profile_name(k, widths_[k].function.width), widths_[k].average.mean(),
                                 last.gravity, c_.particle_density);
+      ChuteSeries series = series_;
+      series.finish();
+      series.write_csv(out / "chute_series.csv");
+      chute["series_blocks"] = series.rows().size();
       chute["averaging_window"] = {first_time_, last_time_};
       chute["width"] = c_.width;
       chute["coarse_graining_seconds"] = cg_seconds_;
@@ -225,6 +249,7 @@ class ChuteObserver final : public RunObserver {
   double next_snapshot_ = 0;
   double first_time_ = 0, first_px_ = 0, last_time_ = 0, last_px_ = 0;
   double cg_seconds_ = 0;
+  ChuteSeries series_;
 };
 
 }  // namespace

@@ -19,6 +19,7 @@ struct ChuteStudyConfig {
   double start = 0;                 ///< sqrt(d/g), first snapshot of the averaging window
   double end = 0;                   ///< sqrt(d/g), last snapshot (run end by default)
   double interval = 0;              ///< sqrt(d/g) between snapshots: t_c / 2 (Eq. 43)
+  double series_interval = 1;       ///< sqrt(d/g), length of a block of chute_series.csv
   CgKernel kernel = CgKernel::gaussian;
   double width = 0.25;              ///< d, Gaussian w (Sect. 7 chooses 0.25), or the Lucy cutoff c
   std::vector<double> extra_widths; ///< further widths, profiles written alongside (Fig. 6)

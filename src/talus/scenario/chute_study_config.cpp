@@ -28,6 +28,7 @@ ChuteStudyConfig read_chute_study(const io::ScenarioFile& f, double contact_time
   c.end = f.get_or<double>(cg + "end", end_time, io::positive);
   if (c.coarse_grain && c.end <= c.start) f.fail(cg + "end", "must be after chute.coarse_graining.start");
   c.interval = f.get_or<double>(cg + "interval", 0.5 * contact_time, io::positive);  // Weinhart et al. 2012, Sect. 7
+  c.series_interval = f.get_or<double>(cg + "series_interval", 1.0, io::positive);
   const std::string kernel = f.get_choice_or(cg + "function", "gaussian", {"gaussian", "lucy"});
   c.kernel = kernel == "lucy" ? CgKernel::lucy : CgKernel::gaussian;
   c.width = f.get_or<double>(cg + "width", 0.25, io::positive);
