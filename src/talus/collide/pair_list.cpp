@@ -316,6 +316,7 @@ void PairList::carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limi
   // of its own, so rows count and copy in parallel.
   const long rows_n = static_cast<long>(rows());
   const bool parallel = worth_parallel(rows());
+  c.points.clear();  // the caller adds them, if it needs them
   c.start.assign(gid_limit + 1, 0);
 #pragma omp parallel for schedule(static) if (parallel)
   for (long i = 0; i < rows_n; ++i) {
@@ -355,17 +356,27 @@ CarriedRecord carried_record(const CarriedContacts& c, std::uint32_t a, std::siz
 }
 
 void group_records(const std::vector<CarriedRecord>& records, std::size_t gid_limit, const MemoryLayout& layout,
-                   CarriedContacts& c) {
+                   CarriedContacts& c, std::vector<SubContactList>* points) {
   c.start.assign(gid_limit + 1, 0);
   for (const CarriedRecord& r : records) ++c.start[r.a + 1];
   for (std::size_t a = 0; a < gid_limit; ++a) c.start[a + 1] += c.start[a];
   c.other.resize(records.size());
   c.entry.clear();
+  c.points.clear();
+  if (points) {
+    c.entry.resize(records.size());
+    c.points.resize(records.size());
+  }
   c.memory.resize_for_overwrite(records.size(), layout);
   std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
-  for (const CarriedRecord& r : records) {
+  for (std::size_t n = 0; n < records.size(); ++n) {
+    const CarriedRecord& r = records[n];
     const std::uint32_t k = fill[r.a]++;
     c.other[k] = r.b;
+    if (points) {
+      c.entry[k] = k;
+      c.points[k] = std::move((*points)[n]);
+    }
     if (layout.spring) c.memory.spring[k] = r.spring;
     if (layout.normal_prev) c.memory.normal_prev[k] = r.normal_prev;
     if (layout.rolling) c.memory.rolling[k] = r.rolling;

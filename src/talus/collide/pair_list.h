@@ -13,6 +13,7 @@
 #include "talus/body/particles.h"
 #include "talus/collide/cell_grid.h"
 #include "talus/math/vec3.h"
+#include "talus/world/sub_contacts.h"
 
 namespace talus {
 
@@ -47,6 +48,9 @@ struct CarriedContacts {
   std::vector<std::uint32_t> other;  ///< global id b of each record
   std::vector<std::uint32_t> entry;  ///< the record's entry in the list it came from
   ContactMemory memory;              ///< the record's memory, as seen from a
+  // Shaped bodies between ranks: each record's contact points, seen from a (then `entry` holds
+  // each record's own index, the origin of the SubContactStore of the new list).
+  std::vector<SubContactList> points;
   std::size_t bytes() const;  ///< memory held
 };
 
@@ -61,8 +65,9 @@ struct CarriedRecord {
 CarriedRecord carried_record(const CarriedContacts& carried, std::uint32_t a, std::size_t k);
 // `records` grouped by their key a into `carried`, as PairList::carry makes them (no entries of
 // origin). Keys must be below `gid_limit`; memories the layout does not keep are dropped.
+// `points`, if given, are the records' contact points (one list per record), grouped with them.
 void group_records(const std::vector<CarriedRecord>& records, std::size_t gid_limit, const MemoryLayout& layout,
-                   CarriedContacts& carried);
+                   CarriedContacts& carried, std::vector<SubContactList>* points = nullptr);
 
 class PairList {
  public:

@@ -38,11 +38,30 @@ void put_row(ParticleStore& p, std::size_t i, const ParticleRow& r) {
   p.gid[i] = r.gid;
 }
 
-// What goes to one neighbour: the particles entering its slab, then the records.
+void put_points(ByteWriter& w, const std::vector<SubContactList>& lists) {
+  w.put(static_cast<std::uint64_t>(lists.size()));
+  for (const SubContactList& l : lists) {
+    w.put(static_cast<std::uint64_t>(l.size()));
+    for (const SubContact& s : l) w.put(s);
+  }
+}
+
+void get_points(ByteReader& r, std::vector<SubContactList>& lists) {
+  lists.resize(r.get<std::uint64_t>());
+  for (SubContactList& l : lists) {
+    l.resize(r.get<std::uint64_t>());
+    for (SubContact& s : l) s = r.get<SubContact>();
+  }
+}
+
+// What goes to one neighbour: the particles entering its slab, then the records (with the
+// contact points of shaped bodies: one list per record, or none for spheres).
 struct Parcel {
   std::vector<ParticleRow> particles;
   std::vector<CarriedRecord> records;
+  std::vector<SubContactList> record_points;
   std::vector<WallMemoryRecord> wall_records;
+  std::vector<SubContactList> wall_points;
   std::vector<std::byte> bytes() const {
     std::vector<std::byte> out;
     ByteWriter w(out);
@@ -50,8 +69,10 @@ struct Parcel {
     for (const ParticleRow& r : particles) w.put(r);
     w.put(static_cast<std::uint64_t>(records.size()));
     for (const CarriedRecord& r : records) w.put(r);
+    put_points(w, record_points);
     w.put(static_cast<std::uint64_t>(wall_records.size()));
     for (const WallMemoryRecord& r : wall_records) w.put(r);
+    put_points(w, wall_points);
     return out;
   }
   static Parcel from(const std::vector<std::byte>& in) {
@@ -62,8 +83,10 @@ struct Parcel {
     for (ParticleRow& row : p.particles) row = r.get<ParticleRow>();
     p.records.resize(r.get<std::uint64_t>());
     for (CarriedRecord& rec : p.records) rec = r.get<CarriedRecord>();
+    get_points(r, p.record_points);
     p.wall_records.resize(r.get<std::uint64_t>());
     for (WallMemoryRecord& rec : p.wall_records) rec = r.get<WallMemoryRecord>();
+    get_points(r, p.wall_points);
     return p;
   }
 };
@@ -71,7 +94,7 @@ struct Parcel {
 
 MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, CarriedContacts& carried,
                        std::vector<WallMemoryRecord>& wall_memories, const MemoryLayout& layout,
-                       std::size_t gid_limit) {
+                       std::size_t gid_limit, std::vector<SubContactList>* wall_points) {
   const int me = slabs.rank(), lower = slabs.lower(), upper = slabs.upper();
   // Parcels to the neighbours below [0] and above [1]; one parcel if they are the same rank.
   Parcel parcel[2];
@@ -94,23 +117,32 @@ MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, Carried
     destination[p.gid[i]] = owner;
   }
   std::vector<WallMemoryRecord> staying;
-  for (const WallMemoryRecord& r : wall_memories) {
-    if (destination[r.gid] < 0)
-      staying.push_back(r);
-    else
-      parcel_for(destination[r.gid]).wall_records.push_back(r);
+  std::vector<SubContactList> staying_points;
+  for (std::size_t n = 0; n < wall_memories.size(); ++n) {
+    const WallMemoryRecord& r = wall_memories[n];
+    const bool stays = destination[r.gid] < 0;
+    Parcel* out = stays ? nullptr : &parcel_for(destination[r.gid]);
+    (stays ? staying : out->wall_records).push_back(r);
+    if (wall_points) (stays ? staying_points : out->wall_points).push_back(std::move((*wall_points)[n]));
   }
   wall_memories = std::move(staying);
+  if (wall_points) *wall_points = std::move(staying_points);
 
   // Records of pairs this rank no longer holds wholly go to the neighbours, who may now list them.
+  const bool with_points = wall_points != nullptr;  // shaped bodies
   std::vector<CarriedRecord> kept;
+  std::vector<SubContactList> kept_points;
   for (std::uint32_t a = 0; a < gid_limit; ++a)
     for (std::uint32_t k = carried.start[a]; k < carried.start[a + 1]; ++k) {
       const CarriedRecord r = carried_record(carried, a, k);
-      if (owned_after[r.a] || owned_after[r.b]) kept.push_back(r);
+      const auto add = [&](std::vector<CarriedRecord>& records, std::vector<SubContactList>& points) {
+        records.push_back(r);
+        if (with_points) points.push_back(carried.points[k]);
+      };
+      if (owned_after[r.a] || owned_after[r.b]) add(kept, kept_points);
       if (owned_after[r.a] && owned_after[r.b]) continue;
-      if (lower >= 0 && lower != me) parcel[0].records.push_back(r);
-      if (upper >= 0 && upper != me && upper != lower) parcel[1].records.push_back(r);
+      if (lower >= 0 && lower != me) add(parcel[0].records, parcel[0].record_points);
+      if (upper >= 0 && upper != me && upper != lower) add(parcel[1].records, parcel[1].record_points);
     }
 
   // Down, then up (each rank sends to one neighbour and receives from the other).
@@ -139,21 +171,27 @@ MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, Carried
       ++count.arrived;
     }
     kept.insert(kept.end(), in.records.begin(), in.records.end());
+    kept_points.insert(kept_points.end(), in.record_points.begin(), in.record_points.end());
     wall_memories.insert(wall_memories.end(), in.wall_records.begin(), in.wall_records.end());
+    if (wall_points) wall_points->insert(wall_points->end(), in.wall_points.begin(), in.wall_points.end());
   }
 
   // Every record keyed by a particle this rank owns (seen from it; memories change sign when
   // seen from the other body), the others dropped; then grouped by key as carry() makes them.
   std::size_t n = 0;
-  for (CarriedRecord& r : kept) {
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    CarriedRecord& r = kept[k];
     if (!owned_after[r.a]) {
       if (!owned_after[r.b]) continue;
       r = {r.b, r.a, -1.0 * r.spring, -1.0 * r.normal_prev, -1.0 * r.rolling};
+      if (with_points) reverse_points(kept_points[k]);
     }
+    if (with_points && n != k) kept_points[n] = std::move(kept_points[k]);
     kept[n++] = r;
   }
   kept.resize(n);
-  group_records(kept, gid_limit, layout, carried);
+  if (with_points) kept_points.resize(n);
+  group_records(kept, gid_limit, layout, carried, with_points ? &kept_points : nullptr);
   return count;
 }
 

@@ -20,8 +20,11 @@ struct MigrationCount {
 // Owned particles must be wrapped and ghosts dropped. A particle may move one slab per
 // rebuild (it moves less than half a skin between rebuilds, and slabs are wider).
 // `wall_memories` (keyed by global id) go with their particles and come with the arrivals.
+// Shaped bodies' contact points travel too when `wall_points` is given (one list per wall
+// memory) and `carried.points` holds one list per record; after the call `carried` holds its
+// points (entry k being record k) and `wall_points` those of the new `wall_memories`.
 MigrationCount migrate(ParticleStore& particles, const SlabDecomposition& slabs, CarriedContacts& carried,
                        std::vector<WallMemoryRecord>& wall_memories, const MemoryLayout& layout,
-                       std::size_t gid_limit);
+                       std::size_t gid_limit, std::vector<SubContactList>* wall_points = nullptr);
 
 }  // namespace talus

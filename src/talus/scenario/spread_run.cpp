@@ -14,7 +14,6 @@ void check_spreadable(const Scenario& sc) {
   };
   if (!sc.pours.empty()) refuse("a scenario with [[pour]] (particles inserted while it runs)");
   if (sc.control.on_leave == LeavePolicy::remove) refuse("a scenario with domain.on_leave = \"delete\"");
-  if (sc.world->shapes().size() > 1) refuse("a scenario with rigid bodies of several convex parts");
 }
 
 ScratchFolder::ScratchFolder(const std::filesystem::path& results, int rank) {

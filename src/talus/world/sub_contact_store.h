@@ -35,7 +35,17 @@ class SubContactStore {
   // entry origin[e] - 1, or of old entry -origin[e] - 1 seen from the other body, or none if
   // origin[e] is 0 (the `origin` of PairList::restore_memory, WallContactList::transfer_memory).
   template <class List>
-  SubContactStore carried_to(const List& list, const std::vector<std::int64_t>& origin) const;
+  SubContactStore carried_to(const List& list, const std::vector<std::int64_t>& origin) const {
+    return from_origin(list, origin, entries(), [this](std::size_t old) { return of(old); });
+  }
+  // The same from plain lists (carried between ranks or read from a checkpoint): origin[e]
+  // names a list of `lists`, as above.
+  template <class List>
+  static SubContactStore from_lists(const List& list, const std::vector<std::int64_t>& origin,
+                                    const std::vector<SubContactList>& lists) {
+    return from_origin(list, origin, lists.size(),
+                       [&lists](std::size_t k) { return std::span<const SubContact>(lists[k]); });
+  }
   // Empty lists laid out on `list`, unless the store already follows its entries and rows.
   template <class List>
   void follow(const List& list) {
@@ -51,6 +61,10 @@ class SubContactStore {
     return {blocks_[block_of_entry_[e]].current.data() + first_[e], count_[e]};
   }
   std::vector<SubContactList> lists() const;  ///< one list per entry (checkpoints)
+  SubContactList list_of(std::size_t e) const {
+    const std::span<const SubContact> points = of(e);
+    return {points.begin(), points.end()};
+  }
 
   // The pass over block b, entries in order: start_block(b), then for each entry either
   // take(e), whose points are appended to next_points(b) and recorded with record(e, first,
@@ -80,6 +94,10 @@ class SubContactStore {
   void finish_block(std::size_t b);
 
  private:
+  template <class List, class PointsOf>
+  static SubContactStore from_origin(const List& list, const std::vector<std::int64_t>& origin, std::size_t sources,
+                                     PointsOf&& points_of);
+
   struct Block {
     std::vector<SubContact> current, next;
     std::size_t cursor = 0;  ///< in current, during a pass
@@ -109,15 +127,16 @@ void SubContactStore::assign(const List& list, Append&& append) {
   }
 }
 
-template <class List>
-SubContactStore SubContactStore::carried_to(const List& list, const std::vector<std::int64_t>& origin) const {
+template <class List, class PointsOf>
+SubContactStore SubContactStore::from_origin(const List& list, const std::vector<std::int64_t>& origin,
+                                             std::size_t sources, PointsOf&& points_of) {
   SubContactStore fresh;
   fresh.assign(list, [&](std::size_t e, std::vector<SubContact>& out) {
     const std::int64_t o = origin[e];
     const std::size_t old = static_cast<std::size_t>(o > 0 ? o - 1 : -o - 1);
-    if (o == 0 || old >= entries()) return;
+    if (o == 0 || old >= sources) return;
     const std::size_t first = out.size();
-    const std::span<const SubContact> points = of(old);
+    const std::span<const SubContact> points = points_of(old);
     out.insert(out.end(), points.begin(), points.end());
     if (o < 0) reverse_points(std::span<SubContact>(out).subspan(first));
   });

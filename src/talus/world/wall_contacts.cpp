@@ -49,25 +49,33 @@ void WallContactList::transfer_memory(const WallContactList& old, const std::vec
   }
 }
 
-std::vector<WallMemoryRecord> WallContactList::carry(const std::vector<std::uint32_t>& gid) const {
+std::vector<WallMemoryRecord> WallContactList::carry(const std::vector<std::uint32_t>& gid, bool every_entry,
+                                                     std::vector<std::uint32_t>* entries) const {
   std::vector<WallMemoryRecord> records;
+  if (entries) entries->clear();
   const auto at = [](const std::vector<Vec3>& v, std::size_t e) { return v.empty() ? Vec3{} : v[e]; };
   for (std::size_t i = 0; i < rows(); ++i)
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e)
-      if (memory.active(e))
+      if (every_entry || memory.active(e)) {
         records.push_back({gid[i], wall_[e], at(memory.spring, e), at(memory.normal_prev, e), at(memory.rolling, e)});
+        if (entries) entries->push_back(e);
+      }
   return records;
 }
 
 void WallContactList::restore_memory(const std::vector<WallMemoryRecord>& records,
-                                     const std::vector<std::uint32_t>& gid, std::size_t gid_limit) {
+                                     const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
+                                     std::vector<std::int64_t>* origin) {
+  if (origin) origin->assign(entries(), 0);
   if (records.empty()) return;
   const std::vector<std::int32_t> row_of = rows_by_global_id(rows(), gid, gid_limit);
-  for (const WallMemoryRecord& r : records) {
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    const WallMemoryRecord& r = records[k];
     const std::int32_t i = row_of[r.gid];
     if (i < 0) continue;
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) {
       if (wall_[e] != r.wall) continue;
+      if (origin) (*origin)[e] = static_cast<std::int64_t>(k) + 1;
       if (!memory.spring.empty()) memory.spring[e] = r.spring;
       if (!memory.normal_prev.empty()) memory.normal_prev[e] = r.normal_prev;
       if (!memory.rolling.empty()) memory.rolling[e] = r.rolling;

@@ -153,15 +153,26 @@ void World::rebuild() {
   CarriedContacts& carried = carried_;
   pairs_.carry(gid_at_build_, next_gid_, has_composites(), carried);
   pairs_.clear();
-  // A distributed world carries its wall memories by global id too, as particles change rank.
+  // A distributed world carries its wall memories by global id too, as particles change rank,
+  // and shaped bodies their contact points with them, as plain lists.
   std::vector<WallMemoryRecord> wall_memories;
+  const bool points_travel = distributed() && has_composites();
+  std::vector<SubContactList> wall_points;
   if (distributed()) {
     ScopedPhase exchange(timer_, Phase::exchange);
-    wall_memories = wall_pairs_.carry(gid_at_build_);
+    std::vector<std::uint32_t> wall_entries;
+    wall_memories = wall_pairs_.carry(gid_at_build_, points_travel, &wall_entries);
+    if (points_travel) {
+      carried.points.resize(carried.entry.size());
+      for (std::size_t k = 0; k < carried.entry.size(); ++k) carried.points[k] = pair_sub_.list_of(carried.entry[k]);
+      wall_points.resize(wall_entries.size());
+      for (std::size_t k = 0; k < wall_entries.size(); ++k) wall_points[k] = wall_sub_.list_of(wall_entries[k]);
+    }
     std::vector<double> coordinate(p.owned);
     for (std::size_t i = 0; i < p.owned; ++i) coordinate[i] = p.position[i][slabs_.axis];
     slabs_.rebalance_by_count(coordinate);
-    migrated_ += migrate(p, slabs_, carried, wall_memories, memory_layout(), next_gid_).left;
+    migrated_ += migrate(p, slabs_, carried, wall_memories, memory_layout(), next_gid_,
+                         points_travel ? &wall_points : nullptr).left;
   }
   const long owned = static_cast<long>(p.owned);
   grid_.setup(distributed() ? slab_grid_domain() : domain, p.position, p.owned, range,
@@ -229,16 +240,20 @@ void World::rebuild() {
   placed_.restart_travel();
   std::vector<std::int64_t> origin;
   pairs_.restore_memory(carried, p.gid, has_composites() ? &origin : nullptr);
-  if (has_composites()) pair_sub_ = pair_sub_.carried_to(pairs_, origin);
+  if (has_composites())
+    pair_sub_ = points_travel ? SubContactStore::from_lists(pairs_, origin, carried.points)
+                              : pair_sub_.carried_to(pairs_, origin);
 
   WallContactList old_walls = std::move(wall_pairs_);
   wall_pairs_ = WallContactList{};
   wall_pairs_.build(p, walls_, time_, skin_, layout);
   if (distributed())
-    wall_pairs_.restore_memory(wall_memories, p.gid, next_gid_);
+    wall_pairs_.restore_memory(wall_memories, p.gid, next_gid_, has_composites() ? &origin : nullptr);
   else
     wall_pairs_.transfer_memory(old_walls, gid_at_build_, p.gid, next_gid_, has_composites() ? &origin : nullptr);
-  if (has_composites()) wall_sub_ = wall_sub_.carried_to(wall_pairs_, origin);
+  if (has_composites())
+    wall_sub_ = points_travel ? SubContactStore::from_lists(wall_pairs_, origin, wall_points)
+                              : wall_sub_.carried_to(wall_pairs_, origin);
   gid_at_build_ = p.gid;  // owned and ghost ids of this build, for the next transfer
   mark_step_ends();
 

@@ -29,8 +29,6 @@ void World::distribute(const Communicator& comm) {
 }
 
 void World::distribute(const SlabDecomposition& slabs) {
-  if (slabs.ranks() > 1 && has_composites())
-    throw std::runtime_error("rigid bodies of several convex parts run on one rank only (for now)");
   ParticleStore& p = particles_;
   const Domain& domain = settings_.domain;
   slabs_ = slabs;

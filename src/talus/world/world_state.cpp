@@ -57,6 +57,15 @@ void take(ByteReader& r, std::vector<T>& v) {
   for (auto n = r.get<std::uint64_t>(); n > 0; --n) v.push_back(r.get<T>());
 }
 
+void put_lists(StatePacker& out, const std::vector<SubContactList>& lists) {
+  out.w.put(static_cast<std::uint64_t>(lists.size()));
+  for (const SubContactList& l : lists) out.put(l);
+}
+
+void take_lists(ByteReader& r, std::vector<SubContactList>& lists) {
+  for (auto n = r.get<std::uint64_t>(); n > 0; --n) take(r, lists.emplace_back());
+}
+
 // The pieces of every rank joined, rank after rank, on every rank.
 void join_pieces(WorldState& s, const Communicator& comm) {
   std::vector<std::byte> mine;
@@ -69,6 +78,7 @@ void join_pieces(WorldState& s, const Communicator& comm) {
   out.put(s.pair_memory.spring), out.put(s.pair_memory.normal_prev), out.put(s.pair_memory.rolling);
   out.put(s.wall_gid), out.put(s.wall_index), out.put(s.wall_entry_force);
   out.put(s.wall_memory.spring), out.put(s.wall_memory.normal_prev), out.put(s.wall_memory.rolling);
+  put_lists(out, s.pair_sub), put_lists(out, s.wall_sub);
   const std::vector<std::byte> all = comm.all_gather(mine);
   WorldState j;
   ParticleStore& q = j.particles;
@@ -81,6 +91,7 @@ void join_pieces(WorldState& s, const Communicator& comm) {
     take(in, j.pair_memory.spring), take(in, j.pair_memory.normal_prev), take(in, j.pair_memory.rolling);
     take(in, j.wall_gid), take(in, j.wall_index), take(in, j.wall_entry_force);
     take(in, j.wall_memory.spring), take(in, j.wall_memory.normal_prev), take(in, j.wall_memory.rolling);
+    take_lists(in, j.pair_sub), take_lists(in, j.wall_sub);
   }
   q.owned = q.position.size();
   s.particles = std::move(q);
@@ -92,6 +103,8 @@ void join_pieces(WorldState& s, const Communicator& comm) {
   s.wall_index = std::move(j.wall_index);
   s.wall_entry_force = std::move(j.wall_entry_force);
   s.wall_memory = std::move(j.wall_memory);
+  s.pair_sub = std::move(j.pair_sub);
+  s.wall_sub = std::move(j.wall_sub);
   s.ranks = static_cast<std::uint64_t>(comm.size());
 }
 
@@ -209,7 +222,6 @@ void World::take_state_without_lists(const WorldState& s) {
 }
 
 void World::restore_by_global_ids(const WorldState& s) {
-  require(!has_composites(), "rigid bodies of several parts are restored from one rank's checkpoints only");
   take_state_without_lists(s);
   time_ = s.time;
   wall_force_ = s.wall_force;
@@ -230,16 +242,24 @@ void World::restore_by_global_ids(const WorldState& s) {
     records[e] = {s.pair_gid_i[e], s.pair_gid_j[e], at(s.pair_memory.spring, e), at(s.pair_memory.normal_prev, e),
                   at(s.pair_memory.rolling, e)};
   }
+  // Shaped bodies' contact points, one list per stored entry, go with their records.
+  const bool shaped = has_composites();
+  require(!shaped || (s.pair_sub.size() == n && s.wall_sub.size() == s.wall_gid.size()),
+          "contact points of the rigid bodies missing");
+  std::vector<SubContactList> pair_points = shaped ? s.pair_sub : std::vector<SubContactList>{};
   CarriedContacts carried;
-  group_records(records, next_gid_, layout, carried);
-  pairs_.restore_memory(carried, particles_.gid);
+  group_records(records, next_gid_, layout, carried, shaped ? &pair_points : nullptr);
+  std::vector<std::int64_t> origin;
+  pairs_.restore_memory(carried, particles_.gid, shaped ? &origin : nullptr);
+  if (shaped) pair_sub_ = SubContactStore::from_lists(pairs_, origin, carried.points);
 
   std::vector<WallMemoryRecord> walls;
   require(s.wall_index.size() == s.wall_gid.size(), "wall contacts damaged");
   for (std::size_t e = 0; e < s.wall_gid.size(); ++e)
     walls.push_back({s.wall_gid[e], s.wall_index[e], at(s.wall_memory.spring, e), at(s.wall_memory.normal_prev, e),
                      at(s.wall_memory.rolling, e)});
-  wall_pairs_.restore_memory(walls, particles_.gid, next_gid_);
+  wall_pairs_.restore_memory(walls, particles_.gid, next_gid_, shaped ? &origin : nullptr);
+  if (shaped) wall_sub_ = SubContactStore::from_lists(wall_pairs_, origin, s.wall_sub);
   ready_ = true;
 }
 
