@@ -75,6 +75,12 @@ int main(int argc, char** argv) {
   const double ghosts = comm.max(static_cast<double>(world->halo().count()));
   const double owned_min = -comm.max(-static_cast<double>(world->owned_count()));
   const double owned_max = comm.max(static_cast<double>(world->owned_count()));
+  // Each rank's seconds per phase: where the exchange's waiting comes from.
+  const int phases = static_cast<int>(Phase::count);
+  std::vector<double> phase_seconds(static_cast<std::size_t>(comm.size() * phases), 0.0);
+  for (int k = 0; k < phases; ++k)
+    phase_seconds[static_cast<std::size_t>(comm.rank() * phases + k)] = world->timer().seconds(static_cast<Phase>(k));
+  comm.sum_in_place(phase_seconds);
   const double engine_bytes = comm.sum(static_cast<double>(world->memory_bytes()));
   const double peak_rss_mib = comm.max(static_cast<double>(bench::peak_resident_kib()) / 1024);
   if (comm.rank() == 0) {
@@ -88,6 +94,12 @@ int main(int argc, char** argv) {
     if (tiled) {
       std::printf("METRIC %s_engine_bytes_per_particle %.0f B\n", name.c_str(), engine_bytes / particles);
       std::printf("METRIC %s_peak_rss_per_rank %.0f MiB\n", name.c_str(), peak_rss_mib);
+    }
+    for (int r = 0; r < comm.size(); ++r) {
+      std::printf("# rank %d seconds:", r);
+      for (int k = 0; k < phases; ++k)
+        std::printf(" %s %.3f", phase_name(static_cast<Phase>(k)), phase_seconds[static_cast<std::size_t>(r * phases + k)]);
+      std::printf("\n");
     }
     std::printf("# %d ranks x %d threads, %.0f particles, %llu steps x %d repetitions, fastest %.3f s\n", comm.size(),
                 omp_get_max_threads(), particles, static_cast<unsigned long long>(steps), repetitions, best);

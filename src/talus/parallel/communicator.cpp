@@ -106,6 +106,19 @@ std::vector<std::byte> Communicator::exchange(const std::vector<std::byte>& out,
   return in;
 }
 
+void Communicator::exchange_sized(const std::vector<std::byte>& out, int to, int from, int tag,
+                                  std::vector<std::byte>& in) const {
+  if (!mpi_ || (to == rank_ && from == rank_)) {
+    if (from == rank_) in = out;
+    return;
+  }
+  if (to < 0) to = MPI_PROC_NULL;
+  if (from < 0) from = MPI_PROC_NULL;
+  check(MPI_Sendrecv(out.data(), static_cast<int>(out.size()), MPI_BYTE, to, tag, in.data(), static_cast<int>(in.size()),
+                     MPI_BYTE, from, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+        "MPI_Sendrecv");
+}
+
 std::vector<std::byte> Communicator::all_gather(const std::vector<std::byte>& mine) const {
   if (!mpi_) return mine;
   const int n = static_cast<int>(mine.size());

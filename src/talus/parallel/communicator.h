@@ -33,6 +33,9 @@ class Communicator {
   // along a ring: every rank calls it with the same tag). Returns what arrived. A rank of -1
   // is nobody: nothing is sent, or nothing arrives.
   std::vector<std::byte> exchange(const std::vector<std::byte>& out, int to, int from, int tag) const;
+  // The same when the receiver knows how many bytes come (the halo's every-step exchanges): one
+  // message each way into `in`, sized by the caller.
+  void exchange_sized(const std::vector<std::byte>& out, int to, int from, int tag, std::vector<std::byte>& in) const;
   // Every rank's bytes, concatenated in rank order, on every rank.
   std::vector<std::byte> all_gather(const std::vector<std::byte>& mine) const;
 

@@ -79,29 +79,30 @@ void HaloExchange::create(ParticleStore& p, const SlabDecomposition& slabs, cons
   }
 }
 
+// Between rebuilds both sides know the message sizes: one message each way.
 void HaloExchange::forward(ParticleStore& p) const {
   const int axis = slabs_->axis;
-  std::vector<std::byte> out;
-  out.reserve(sent_index_.size() * sizeof(GhostState));
-  ByteWriter w(out);
+  out_.clear();
+  ByteWriter w(out_);
   for (const std::uint32_t k : sent_index_) w.put(state_of(p, k, axis, shift_));
-  const std::vector<std::byte> in = slabs_->comm->exchange(out, slabs_->lower(), slabs_->upper(), kForwardTag);
-  if (in.size() != received_ * sizeof(GhostState)) throw std::logic_error("halo forward exchange out of step");
-  ByteReader r(in);
+  in_.resize(received_ * sizeof(GhostState));
+  slabs_->comm->exchange_sized(out_, slabs_->lower(), slabs_->upper(), kForwardTag, in_);
+  if (in_.size() != received_ * sizeof(GhostState)) throw std::logic_error("halo forward exchange out of step");
+  ByteReader r(in_);
   for (std::size_t g = 0; g < received_; ++g) set_state(p, first_ + g, r.get<GhostState>());
 }
 
 void HaloExchange::reverse(ParticleStore& p) const {
-  std::vector<std::byte> out;
-  out.reserve(received_ * 2 * sizeof(Vec3));
-  ByteWriter w(out);
+  out_.clear();
+  ByteWriter w(out_);
   for (std::size_t g = 0; g < received_; ++g) {
     w.put(p.force[first_ + g]);
     w.put(p.torque[first_ + g]);
   }
-  const std::vector<std::byte> in = slabs_->comm->exchange(out, slabs_->upper(), slabs_->lower(), kReverseTag);
-  if (in.size() != sent_index_.size() * 2 * sizeof(Vec3)) throw std::logic_error("halo reverse exchange out of step");
-  ByteReader r(in);
+  in_.resize(sent_index_.size() * 2 * sizeof(Vec3));
+  slabs_->comm->exchange_sized(out_, slabs_->upper(), slabs_->lower(), kReverseTag, in_);
+  if (in_.size() != sent_index_.size() * 2 * sizeof(Vec3)) throw std::logic_error("halo reverse exchange out of step");
+  ByteReader r(in_);
   for (const std::uint32_t k : sent_index_) {
     p.force[k] += r.get<Vec3>();
     p.torque[k] += r.get<Vec3>();

@@ -35,6 +35,7 @@ class HaloExchange {
   std::vector<std::uint32_t> sent_index_;  ///< the particles sent down, in message order
   double shift_ = 0;                       ///< m, added to the sent coordinate (the periodic face)
   std::size_t first_ = 0, received_ = 0;
+  mutable std::vector<std::byte> out_, in_;  ///< the every-step messages, kept to spare the allocations
 };
 
 }  // namespace talus
