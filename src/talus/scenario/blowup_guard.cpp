@@ -144,8 +144,21 @@ std::optional<BlowUp> agree(const std::optional<BlowUp>& mine, const Communicato
 }  // namespace
 
 std::optional<BlowUp> BlowUpGuard::check(World& world) {
+  const std::uint64_t before = removed_;
   std::optional<BlowUp> found = check_here(world);
-  return world.distributed() ? agree(found, world.communicator()) : found;
+  if (world.distributed()) {
+    found = agree(found, world.communicator());
+    // Particles that left some rank's slab of the domain: every rank rebuilds (collectively),
+    // and the count is the whole system's.
+    if (on_leave_ == LeavePolicy::remove) {
+      const std::uint64_t here = removed_ - before;
+      const std::uint64_t all = world.communicator().sum(here);
+      removed_ = before + all;
+      if (all > 0) world.rebuild_before_next_step();
+    }
+  }
+  if (removed_ != before) world.make_ready();  // outputs and observers read contacts before the next step would rebuild
+  return found;
 }
 
 std::optional<BlowUp> BlowUpGuard::check_here(World& world) {
@@ -156,7 +169,6 @@ std::optional<BlowUp> BlowUpGuard::check_here(World& world) {
   if (faults == kOutside && on_leave_ == LeavePolicy::remove) {
     const GuardBounds bounds(world.settings().domain, dt);
     removed_ += world.remove_particles_if([&](std::size_t i) { return (particle_faults(p, i, bounds) & kOutside) != 0; });
-    world.make_ready();  // outputs and observers read contacts before the next step would rebuild
     return std::nullopt;
   }
 

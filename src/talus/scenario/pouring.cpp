@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "talus/math/random_orientation.h"
+#include "talus/parallel/communicator.h"
 #include "talus/scenario/insertion.h"
 
 namespace talus {
@@ -20,12 +21,16 @@ std::size_t Pouring::pour_due(World& world) {
   const bool open[3] = {false, false, false};
   SphereOverlapIndex index(lo, hi, open, 2 * spec_.radius_max);
   const ParticleStore& p = world.particles();
+  std::vector<std::byte> near_here;  // the particles near the region, of every rank when distributed
+  ByteWriter w(near_here);
   for (std::size_t i = 0; i < p.owned; ++i) {
     const Vec3 x = domain.wrap(p.position[i]);
     bool near = true;
     for (int a = 0; a < 3; ++a) near = near && x[a] >= lo[a] - p.radius[i] && x[a] <= hi[a] + p.radius[i];
-    if (near) index.insert({x, p.radius[i]});
+    if (near) w.put(PlacedSphere{x, p.radius[i]});
   }
+  const std::vector<std::byte> near = world.distributed() ? world.communicator().all_gather(near_here) : near_here;
+  for (ByteReader r(near); !r.done();) index.insert(r.get<PlacedSphere>());
   std::uniform_real_distribution<double> unit(0, 1);
   const Vec3 size = spec_.region_hi - spec_.region_lo;
   std::size_t added = 0;
@@ -48,7 +53,11 @@ std::size_t Pouring::pour_due(World& world) {
     }
     init.position = x;
     init.velocity = spec_.velocity;
-    world.add_particle(init);
+    // Every rank draws the same places (the same generator, the same neighbours); the owner adds each.
+    if (world.owns(x))
+      world.add_particle(init);
+    else
+      world.skip_global_id();
     ++added;
     ++poured_;
   }

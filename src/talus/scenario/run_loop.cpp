@@ -116,7 +116,6 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   const Communicator& comm = Communicator::world();
   const bool spread = comm.size() > 1;
   RunOptions opt = options;
-  if (spread) check_spreadable(sc);
   std::optional<ScratchFolder> scratch;
   if (spread && comm.rank() > 0) {
     scratch.emplace(opt.out, comm.rank());

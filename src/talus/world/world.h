@@ -159,6 +159,16 @@ class World {
   void make_ready() {
     if (!ready_) prepare();
   }
+  // Insertion into a distributed world runs alike on every rank, each adding the particles it
+  // owns (`owns`) and passing over the others' ids, so that ids stay global and unique.
+  bool owns(const Vec3& position) const;
+  void skip_global_id() {
+    ++next_gid_;
+    invalidate();
+  }
+  // The lists are built anew before the next step (on every rank of a distributed world, which
+  // must all ask: particles left some rank).
+  void rebuild_before_next_step() { invalidate(); }
   // Drops every owned particle for which `remove(index)` is true; returns how many. The contact
   // memories of the others survive: the next step's rebuild carries them over by global id.
   template <class Pred>

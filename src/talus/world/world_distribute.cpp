@@ -28,6 +28,10 @@ void World::distribute(const Communicator& comm) {
   distribute(SlabDecomposition::balanced(comm, domain, axis, std::move(coordinate), range));
 }
 
+bool World::owns(const Vec3& position) const {
+  return !distributed() || slabs_.owner_of(settings_.domain.wrap(position)[slabs_.axis]) == slabs_.rank();
+}
+
 void World::distribute(const SlabDecomposition& slabs) {
   ParticleStore& p = particles_;
   const Domain& domain = settings_.domain;

@@ -41,6 +41,12 @@ void check_particles(const ParticleStore& p, int species, std::size_t shapes, st
             "particle shape " + std::to_string(p.shape[i]) + " not in the scenario");
     require(p.gid[i] < next_gid, "particle global id beyond the next free id");
   }
+  // Memories find their particles by global id: two particles with one id would swap them.
+  std::vector<char> seen(next_gid, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    require(!seen[p.gid[i]], "two particles share the global id " + std::to_string(p.gid[i]));
+    seen[p.gid[i]] = 1;
+  }
 }
 
 // Appends the vectors' values to `out`, each after its length.
