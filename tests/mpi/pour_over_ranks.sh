@@ -10,11 +10,11 @@ talus=$1 scenario=$2 work=$3
 mpirun="mpirun --oversubscribe --allow-run-as-root -x OMP_NUM_THREADS=1"
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 "$talus" run "$scenario" --out one --threads 1 --quiet
-$mpirun -n 2 "$talus" run "$scenario" --out two --threads 1 --quiet
+$mpirun -n 2 "$talus" run "$scenario" --out two --threads 1 --quiet --set run.vtk_interval=0.1 --set run.snapshot_interval=0.1
 $mpirun -n 4 "$talus" run "$scenario" --out four --threads 1 --quiet
 "$talus" run "$scenario" --set run.end_time=0.35 --restart two/checkpoints/latest.h5 --out again --threads 1 --quiet
 /usr/bin/python3 - <<'PY'
-import csv, json, sys
+import csv, glob, json, os, sys
 fail = []
 def check(ok, what):
     if not ok:
@@ -36,6 +36,9 @@ for a, b, c in zip(rows["one"], rows["two"], rows["four"]):
         check(abs(float(other["kinetic_translational"]) - k) <= 1e-9 * k, f"{name}: kinetic energy at t = {a['time']}")
         check(other["particles_left_domain"] == a["particles_left_domain"], f"{name}: removals at t = {a['time']}")
 check(float(rows["one"][12]["particles_left_domain"]) > 0, "no removal before t = 0.12")
+# Frames and snapshot files of the 2-rank run, written by rank 0 (t = 0, 0.1, 0.2, 0.3).
+check(len(glob.glob("two/vtk/particles_*.vtu")) == 4 and os.path.exists("two/vtk/particles.pvd"), "two: VTK frames")
+check(len(glob.glob("two/snapshots/snapshot_*.h5")) == 4, "two: snapshot files")
 again = summary["again"]
 check(again["particles"] + again["particles_left_domain"] == 240 and again["final_time"] > 0.349, "the 2-rank checkpoint's restart on 1 rank")
 if fail:

@@ -112,7 +112,8 @@ void install_stop_handlers() {
 RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   // Under mpirun the run is spread over the ranks (World::distribute); every rank runs the loop,
   // and its outputs, which read the whole system, are the same on every rank. Rank 0 writes
-  // them to the results folder, the others to a scratch folder removed at the end.
+  // them to the results folder, the others to a scratch folder removed at the end; the frames
+  // and snapshot files, the largest, only rank 0 writes (the others join in gathering them).
   const Communicator& comm = Communicator::world();
   const bool spread = comm.size() > 1;
   RunOptions opt = options;
@@ -147,7 +148,8 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   std::optional<io::VtkOutput> vtk;
   auto frame_due = [&] {
     if (!vtk || world.time() < loop.next_frame - 0.5 * world.settings().time_step) return;
-    vtk->write_frame(world.snapshot(), world.walls());
+    const Snapshot snapshot = world.snapshot();
+    if (comm.rank() == 0) vtk->write_frame(snapshot, world.walls());
     loop.vtk_times.push_back(world.time());
     loop.next_frame += run.vtk_interval;
   };
@@ -155,7 +157,8 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   // Snapshot files for analyses of saved output (`talus coarse-grain`, `talus analyze`).
   auto snapshot_due = [&] {
     if (run.snapshot_interval <= 0 || world.time() < loop.next_snapshot - 0.5 * world.settings().time_step) return;
-    io::write_snapshot_file(opt.out / "snapshots" / io::snapshot_file_name(loop.snapshots), world.snapshot());
+    const Snapshot snapshot = world.snapshot();
+    if (comm.rank() == 0) io::write_snapshot_file(opt.out / "snapshots" / io::snapshot_file_name(loop.snapshots), snapshot);
     ++loop.snapshots;
     loop.next_snapshot += run.snapshot_interval;
   };
