@@ -161,7 +161,7 @@ void World::rebuild() {
   if (distributed()) {
     ScopedPhase exchange(timer_, Phase::exchange);
     std::vector<std::uint32_t> wall_entries;
-    wall_memories = wall_pairs_.carry(gid_at_build_, points_travel, &wall_entries);
+    wall_memories = wall_pairs_.carry(gid_at_build_, points_travel, points_travel ? &wall_entries : nullptr);
     if (points_travel) {
       carried.points.resize(carried.entry.size());
       for (std::size_t k = 0; k < carried.entry.size(); ++k) carried.points[k] = pair_sub_.list_of(carried.entry[k]);
