@@ -190,7 +190,8 @@ TEST_F(VtkReadback, ContactsAreLinesWithForces) {
   EXPECT_EQ(values(cd["normal_force"]), (std::vector<double>{2.5, 7}));
   EXPECT_EQ(values(cd["tangential_force"]), (std::vector<double>{0.5, 0}));
   EXPECT_EQ(values(cd["overlap"]), (std::vector<double>{1e-4, 2e-5}));
-  EXPECT_EQ(values(cd["j"]), (std::vector<double>{1, -1}));
+  EXPECT_EQ(values(cd["i"]), (std::vector<double>{10, 12}));  // particle ids
+  EXPECT_EQ(values(cd["j"]), (std::vector<double>{11, -1}));
   EXPECT_EQ(values(cd["wall"]), (std::vector<double>{-1, 0}));
   const auto b = g["bounds"].get<std::vector<double>>();  // from sphere 0 to the floor point
   EXPECT_DOUBLE_EQ(b[0], 0.01);
@@ -255,6 +256,44 @@ TEST_F(VtkReadback, OutputWritesSeriesReadableWhileRunning) {
   EXPECT_EQ(contacts["cells"], json({2, 1}));
   EXPECT_EQ(r.at((d / "shapes.pvd").string())["cells"], json({24, 24}));
   EXPECT_EQ(r.at((d / "particles.pvd").string())["files"], json({"particles_000000.vtu", "particles_000001.vtu"}));
+}
+
+// A frame in two pieces, as two ranks write it: rank 0 holds spheres 0 and 2 and the cross,
+// rank 1 sphere 1, whose contact with sphere 0 rank 1 lists, with sphere 0 as its partner
+// appended to the piece. Joined by the .pvtu, the frame has every particle once and every
+// contact once, named by particle id.
+TEST_F(VtkReadback, FrameInPiecesJoinsToTheWholeSystem) {
+  Snapshot piece0 = snap_, piece1 = snap_;
+  piece0.particles = {snap_.particles[0], snap_.particles[2], snap_.particles[3]};
+  piece0.contacts = {snap_.contacts[1]};
+  piece0.contacts[0].i = 1;  // sphere 2 on the floor
+  piece1.particles = {snap_.particles[1], snap_.particles[0]};  // its own, then the partner
+  piece1.contacts = {snap_.contacts[0]};
+  piece1.contacts[0].i = 1;  // the contact as rank 1 lists it: sphere 0 with sphere 1
+  piece1.contacts[0].j = 0;
+  VtkOutput out(dir_ / "vtk", shapes_);
+  int barriers = 0;
+  out.write_frame_piece(piece1, 1, walls_, 1, 2, [&] { ++barriers; });
+  EXPECT_FALSE(fs::exists(dir_ / "vtk" / "particles.pvd"));  // rank 1 writes no series
+  out = VtkOutput(dir_ / "vtk", shapes_);
+  out.write_frame_piece(piece0, 3, walls_, 0, 2, [&] { ++barriers; });
+  EXPECT_EQ(barriers, 2);
+  const fs::path d = dir_ / "vtk";
+  const json r = read_back({d / "particles_000000.pvtu", d / "contacts_000000.pvtu", d / "shapes_000000.pvtu",
+                            d / "particles.pvd"});
+  ASSERT_FALSE(r.is_null());
+  const json& particles = r.at((d / "particles_000000.pvtu").string());
+  EXPECT_EQ(particles["cells"], 4);
+  std::vector<double> ids = values(particles["point_data"]["id"]);
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(ids, (std::vector<double>{10, 11, 12, 42}));
+  const json& contacts = r.at((d / "contacts_000000.pvtu").string());
+  EXPECT_EQ(contacts["cells"], 2);
+  EXPECT_EQ(values(contacts["cell_data"]["i"]), (std::vector<double>{12, 10}));
+  EXPECT_EQ(values(contacts["cell_data"]["j"]), (std::vector<double>{-1, 11}));
+  EXPECT_EQ(r.at((d / "shapes_000000.pvtu").string())["cells"], 24);  // the cross, once
+  EXPECT_EQ(r.at((d / "particles.pvd").string())["files"], json({"particles_000000.pvtu"}));
+  EXPECT_TRUE(fs::exists(d / "walls_000000.vtu"));
 }
 
 TEST_F(VtkReadback, EmptySnapshotIsAValidFile) {

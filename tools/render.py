@@ -17,7 +17,7 @@ import numpy as np
 from matplotlib.collections import PatchCollection, PolyCollection
 from matplotlib.patches import Circle
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader, vtkXMLUnstructuredGridReader
 
 
 def frame(pvd: Path, time: float):
@@ -31,7 +31,8 @@ def frame(pvd: Path, time: float):
 
 
 def read(path: Path):
-    reader = vtkXMLUnstructuredGridReader()
+    # A frame of a run spread over ranks is a .pvtu joining one piece per rank.
+    reader = vtkXMLPUnstructuredGridReader() if path.suffix == ".pvtu" else vtkXMLUnstructuredGridReader()
     reader.SetFileName(str(path))
     reader.Update()
     return reader.GetOutput()

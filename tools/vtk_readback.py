@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Reads Talus ParaView output back with VTK's own readers and prints it as JSON.
 
-Usage: vtk_readback.py FILE...   (FILE: .vtu or .pvd)
+Usage: vtk_readback.py FILE...   (FILE: .vtu, .pvtu or .pvd)
 
-For a .vtu: {"points", "cells", "cell_types", "bounds", "point_data", "cell_data"}, each data
+For a .vtu or .pvtu (pieces joined): {"points", "cells", "cell_types", "bounds", "point_data", "cell_data"}, each data
 array as {"components", "type", "values"} with the values flattened tuple by tuple.
 For a .pvd: {"type", "timesteps", "files", "cells"}: the collection parsed as XML and every
 frame it names read with VTK (its number of cells).
@@ -16,7 +16,7 @@ import sys
 
 try:
     from vtkmodules.vtkCommonCore import vtkCommand
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+    from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader, vtkXMLUnstructuredGridReader
 except ImportError as e:  # pragma: no cover - reported by the C++ test
     print(f"vtk_readback.py: cannot import VTK ({e}); install python3-vtk9 "
           "(scripts/install-deps.sh)", file=sys.stderr)
@@ -49,7 +49,7 @@ def arrays(data):
 
 
 def read_vtu(path):
-    reader = vtkXMLUnstructuredGridReader()
+    reader = vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu") else vtkXMLUnstructuredGridReader()
     catcher = watched(reader)
     reader.SetFileName(path)
     reader.Update()
@@ -69,7 +69,7 @@ def read_vtu(path):
 
 def read_pvd(path):
     # VTK's Python wheels ship no .pvd reader (ParaView has it); a .pvd is plain XML, so it is
-    # parsed here and every frame it names is opened with VTK's .vtu reader.
+    # parsed here and every frame it names is opened with VTK's .vtu (or .pvtu) reader.
     import xml.etree.ElementTree as ET
     root = ET.parse(path).getroot()
     base = os.path.dirname(path)

@@ -3,13 +3,14 @@
 # box open at its far end, some leaving it. Every rank draws the same places and adds those in
 # its slab, so ids stay unique; removals anywhere rebuild every rank. On 1, 2 and 4 ranks the
 # runs agree to round-off while the flow is not yet chaotic, through the first removals, and all
-# pour every sphere. The 2-rank checkpoint restarts on 1 rank (its ids checked unique).
+# pour every sphere. The 2-rank checkpoint restarts on 1 rank (its ids checked unique). The
+# 2-rank run's VTK frames, written in one piece per rank, join to the 1-rank run's frames.
 # Usage: pour_over_ranks.sh TALUS SCENARIO WORKDIR
 set -eu
 talus=$1 scenario=$2 work=$3
 mpirun="mpirun --oversubscribe --allow-run-as-root -x OMP_NUM_THREADS=1"
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-"$talus" run "$scenario" --out one --threads 1 --quiet
+"$talus" run "$scenario" --out one --threads 1 --quiet --set run.vtk_interval=0.1
 $mpirun -n 2 "$talus" run "$scenario" --out two --threads 1 --quiet --set run.vtk_interval=0.1 --set run.snapshot_interval=0.1
 $mpirun -n 4 "$talus" run "$scenario" --out four --threads 1 --quiet
 "$talus" run "$scenario" --set run.end_time=0.35 --restart two/checkpoints/latest.h5 --out again --threads 1 --quiet
@@ -36,8 +37,46 @@ for a, b, c in zip(rows["one"], rows["two"], rows["four"]):
         check(abs(float(other["kinetic_translational"]) - k) <= 1e-9 * k, f"{name}: kinetic energy at t = {a['time']}")
         check(other["particles_left_domain"] == a["particles_left_domain"], f"{name}: removals at t = {a['time']}")
 check(float(rows["one"][12]["particles_left_domain"]) > 0, "no removal before t = 0.12")
-# Frames and snapshot files of the 2-rank run, written by rank 0 (t = 0, 0.1, 0.2, 0.3).
-check(len(glob.glob("two/vtk/particles_*.vtu")) == 4 and os.path.exists("two/vtk/particles.pvd"), "two: VTK frames")
+# Frames of the 2-rank run (t = 0, 0.1, 0.2, 0.3): the first whole, as rank 0 wrote it before
+# the run was spread, the others in pieces, one per rank, joined by a .pvtu.
+import xml.etree.ElementTree as ET
+from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader, vtkXMLUnstructuredGridReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+def frames(folder, stem):
+    out = []
+    for ds in ET.parse(f"{folder}/vtk/{stem}.pvd").getroot().iter("DataSet"):
+        path = f"{folder}/vtk/" + ds.get("file")
+        reader = vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu") else vtkXMLUnstructuredGridReader()
+        reader.SetFileName(path)
+        reader.Update()
+        out.append((path, reader.GetOutput()))
+    return out
+def ids(grid, where, name):
+    data = grid.GetPointData() if where == "point" else grid.GetCellData()
+    return sorted(vtk_to_numpy(data.GetArray(name)).tolist()) if grid.GetNumberOfCells() else []
+p1, p2 = frames("one", "particles"), frames("two", "particles")
+c1, c2 = frames("one", "contacts"), frames("two", "contacts")
+check([os.path.basename(p) for p, _ in p2] == ["particles_000000.vtu"] + [f"particles_00000{k}.pvtu" for k in (1, 2, 3)], "two: VTK frames")
+check(len(glob.glob("two/vtk/particles_00000[123]_[01].vtu")) == 6, "two: one piece per rank and frame")
+for (path, g) in p2:
+    every = ids(g, "point", "id")
+    check(len(every) == len(set(every)), f"{path}: a particle in two pieces")
+# At t = 0.1 (round-off agreement) the same particles and the same contacts, pair by pair.
+check(ids(p2[1][1], "point", "id") == ids(p1[1][1], "point", "id"), "two: the particles of the frame at t = 0.1")
+def pairs(g):
+    if not g.GetNumberOfCells():
+        return []
+    i, j = (vtk_to_numpy(g.GetCellData().GetArray(n)).tolist() for n in ("i", "j"))
+    return sorted((a, b) if b < 0 or a < b else (b, a) for a, b in zip(i, j))
+check(len(pairs(c1[1][1])) > 0 and pairs(c2[1][1]) == pairs(c1[1][1]),
+      f"two: contacts at t = 0.1, {len(pairs(c2[1][1]))} against {len(pairs(c1[1][1]))} on one rank")
+# Every frame has each contact once: as many lines as the run counted contacts at that time.
+for (path, g) in c2:
+    t = float(ET.parse("two/vtk/contacts.pvd").getroot().find(f".//DataSet[@file='{os.path.basename(path)}']").get("timestep"))
+    row = next(r for r in rows["two"] if abs(float(r["time"]) - t) < 1e-9)
+    counted = int(float(row["contacts"])) + int(float(row["wall_contacts"]))
+    check(g.GetNumberOfCells() == counted, f"{path}: {g.GetNumberOfCells()} contact lines, {counted} contacts counted")
+check(c2[-1][1].GetNumberOfCells() > 20, "two: few contacts in the last frame")
 check(len(glob.glob("two/snapshots/snapshot_*.h5")) == 4, "two: snapshot files")
 again = summary["again"]
 check(again["particles"] + again["particles_left_domain"] == 240 and again["final_time"] > 0.349, "the 2-rank checkpoint's restart on 1 rank")

@@ -10,7 +10,7 @@
 
 namespace talus::io {
 
-void write_contacts_vtu(const std::filesystem::path& path, const Snapshot& s) {
+VtuGrid contacts_grid(const Snapshot& s) {
   Domain domain;
   domain.lo = s.domain_min;
   domain.hi = s.domain_max;
@@ -46,8 +46,8 @@ void write_contacts_vtu(const std::filesystem::path& path, const Snapshot& s) {
     normal_force[k] = dot(c.force, c.normal);
     tangential_force[k] = norm(c.force - c.normal * normal_force[k]);
     overlap[k] = c.overlap;
-    ci[k] = c.i;
-    cj[k] = c.j;
+    ci[k] = static_cast<std::int32_t>(s.particles[c.i].id);
+    cj[k] = c.j >= 0 ? static_cast<std::int32_t>(s.particles[c.j].id) : -1;
     wall[k] = c.j >= 0 ? -1 : c.wall;
   }
   using W = VtuGrid::Where;
@@ -60,7 +60,11 @@ void write_contacts_vtu(const std::filesystem::path& path, const Snapshot& s) {
   grid.add_array(W::kCell, "j", 1, cj);
   grid.add_array(W::kCell, "wall", 1, wall);
   grid.add_array(W::kCell, "periodic", 1, periodic);
-  atomic_write(path, grid.serialize());
+  return grid;
+}
+
+void write_contacts_vtu(const std::filesystem::path& path, const Snapshot& snapshot) {
+  atomic_write(path, contacts_grid(snapshot).serialize());
 }
 
 }  // namespace talus::io

@@ -9,14 +9,17 @@
 //   particle-wall     : from the centre of i to the contact point.
 // Cell data: force (N, on i, Float64 x3), normal (unit, from j or the wall towards i),
 // normal_force (N, force . normal: > 0 repulsive, < 0 adhesive), tangential_force (N,
-// magnitude of the rest), overlap (m), i, j, wall (Int32, -1 when absent), periodic (UInt8).
+// magnitude of the rest), overlap (m), i, j (the particles' ids; j = -1 and wall = the wall
+// index for a wall contact, else wall = -1) (Int32), periodic (UInt8).
 // Tube filter + colour by normal_force gives the usual force-chain picture.
 #include <filesystem>
 
 #include "talus/analysis/snapshot.h"
+#include "talus/io/vtk_xml.h"
 
 namespace talus::io {
 
 void write_contacts_vtu(const std::filesystem::path& path, const Snapshot& snapshot);
+VtuGrid contacts_grid(const Snapshot& snapshot);  ///< the grid behind the file
 
 }  // namespace talus::io

@@ -5,9 +5,13 @@
 //                         shape table is given)
 //   contacts_NNNNNN.vtu   contact network                  (series contacts.pvd)
 //   walls_NNNNNN.vtu      walls at the frame's time        (series walls.pvd)
-// NNNNNN counts frames from 0. Each .pvd is rewritten after its frame file is complete, so a
-// reader of the .pvd never meets a missing or partial frame. Open the four .pvd files in ParaView.
+// NNNNNN counts frames from 0. A run spread over ranks writes each frame of particles, shapes
+// and contacts in pieces, one per rank (stem_NNNNNN_R.vtu, R the rank), joined by
+// stem_NNNNNN.pvtu, which the series lists. Each .pvd is rewritten after its frame's files are
+// complete, so a reader of the .pvd never meets a missing or partial frame. Open the four .pvd
+// files in ParaView.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -21,13 +25,21 @@ namespace talus::io {
 
 class VtkOutput {
  public:
-  // Creates `directory` if needed. `shapes` is the scenario's shape table, indexed by
+  // `directory` is created with the first frame. `shapes` is the scenario's shape table, indexed by
   // ParticleRecord::shape; empty means spheres only (no shapes_*.vtu).
   explicit VtkOutput(std::filesystem::path directory, std::vector<CompositeShape> shapes = {},
                      MeshResolution resolution = {});
 
   // Writes one frame at snapshot.time; walls are clipped to the snapshot's domain.
   void write_frame(const Snapshot& snapshot, const std::vector<Wall>& walls);
+  // One frame of a run spread over `ranks` ranks, called on every rank with its piece
+  // (World::snapshot_piece: its `owned` particles first, then the partners its contacts reach).
+  // Each rank writes its pieces; once `all_written` returns (it must wait for every rank), rank
+  // 0 writes the .pvtu files that join them, the walls, and the series.
+  void write_frame_piece(const Snapshot& piece, std::size_t owned, const std::vector<Wall>& walls, int rank,
+                         int ranks, const std::function<void()>& all_written);
+  // A frame written whole by another rank (a run not yet spread): only the count moves on.
+  void skip_frame() { ++frames_; }
   // A resumed run: frames go on from times.size(); the series list the earlier frames whose
   // files are in the directory (all of them when the run resumes in its own folder).
   void resume(const std::vector<double>& times);
@@ -37,7 +49,8 @@ class VtkOutput {
 
  private:
   std::filesystem::path frame_file(const char* stem) const { return frame_file(stem, frames_); }
-  std::filesystem::path frame_file(const char* stem, std::size_t frame) const;
+  std::filesystem::path frame_file(const char* stem, std::size_t frame, const char* extension = "vtu") const;
+  std::filesystem::path piece_file(const char* stem, int rank) const;
 
   std::filesystem::path directory_;
   std::vector<CompositeShape> shapes_;

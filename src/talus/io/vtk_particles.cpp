@@ -1,5 +1,6 @@
 #include "talus/io/vtk_particles.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -48,20 +49,24 @@ void add_particle_arrays(VtuGrid& grid, VtuGrid::Where where, const Snapshot& s,
 
 }  // namespace
 
-void write_particles_vtu(const std::filesystem::path& path, const Snapshot& snapshot) {
+VtuGrid particles_grid(const Snapshot& snapshot, std::size_t count) {
   VtuGrid grid;
-  std::vector<std::size_t> all(snapshot.particles.size());
+  std::vector<std::size_t> all(std::min(count, snapshot.particles.size()));
   for (std::size_t i = 0; i < all.size(); ++i) {
     all[i] = i;
     const std::int64_t p = grid.add_point(snapshot.particles[i].position);
     grid.add_cell(VtkCellType::kVertex, {p});
   }
   add_particle_arrays(grid, VtuGrid::Where::kPoint, snapshot, all);
-  atomic_write(path, grid.serialize());
+  return grid;
 }
 
-void write_shapes_vtu(const std::filesystem::path& path, const Snapshot& snapshot,
-                      const std::vector<CompositeShape>& shapes, const MeshResolution& resolution) {
+void write_particles_vtu(const std::filesystem::path& path, const Snapshot& snapshot) {
+  atomic_write(path, particles_grid(snapshot, snapshot.particles.size()).serialize());
+}
+
+VtuGrid shapes_grid(const Snapshot& snapshot, std::size_t count, const std::vector<CompositeShape>& shapes,
+                    const MeshResolution& resolution) {
   // One body-frame mesh per shape in use, built on first use.
   std::vector<SurfaceMesh> meshes(shapes.size());
   std::vector<char> built(shapes.size(), 0);
@@ -69,7 +74,7 @@ void write_shapes_vtu(const std::filesystem::path& path, const Snapshot& snapsho
   VtuGrid grid;
   std::vector<std::size_t> owner;  // particle of each cell
   std::vector<std::int32_t> part;
-  for (std::size_t i = 0; i < snapshot.particles.size(); ++i) {
+  for (std::size_t i = 0; i < std::min(count, snapshot.particles.size()); ++i) {
     const ParticleRecord& p = snapshot.particles[i];
     if (p.shape < 0 || static_cast<std::size_t>(p.shape) >= shapes.size())
       throw std::out_of_range("write_shapes_vtu: particle " + std::to_string(p.id) + " has shape " +
@@ -94,7 +99,12 @@ void write_shapes_vtu(const std::filesystem::path& path, const Snapshot& snapsho
   }
   add_particle_arrays(grid, VtuGrid::Where::kCell, snapshot, owner);
   grid.add_array(VtuGrid::Where::kCell, "part", 1, part);
-  atomic_write(path, grid.serialize());
+  return grid;
+}
+
+void write_shapes_vtu(const std::filesystem::path& path, const Snapshot& snapshot,
+                      const std::vector<CompositeShape>& shapes, const MeshResolution& resolution) {
+  atomic_write(path, shapes_grid(snapshot, snapshot.particles.size(), shapes, resolution).serialize());
 }
 
 }  // namespace talus::io

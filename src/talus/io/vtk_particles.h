@@ -15,6 +15,7 @@
 
 #include "talus/analysis/snapshot.h"
 #include "talus/io/vtk_shape_mesh.h"
+#include "talus/io/vtk_xml.h"
 #include "talus/shape/composite_shape.h"
 
 namespace talus::io {
@@ -25,5 +26,10 @@ void write_particles_vtu(const std::filesystem::path& path, const Snapshot& snap
 // std::out_of_range. Particles whose shape is a plain sphere (is_plain_sphere) add no cells.
 void write_shapes_vtu(const std::filesystem::path& path, const Snapshot& snapshot,
                       const std::vector<CompositeShape>& shapes, const MeshResolution& resolution = {});
+
+// The grids behind those files, of the first `count` particles (a rank's piece, vtk_output.h).
+VtuGrid particles_grid(const Snapshot& snapshot, std::size_t count);
+VtuGrid shapes_grid(const Snapshot& snapshot, std::size_t count, const std::vector<CompositeShape>& shapes,
+                    const MeshResolution& resolution = {});
 
 }  // namespace talus::io

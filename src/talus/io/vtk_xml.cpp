@@ -146,4 +146,31 @@ std::string VtuGrid::serialize() const {
   return xml;
 }
 
+std::string VtuGrid::serialize_index(const std::vector<std::string>& pieces) const {
+  const char* byte_order = std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
+  std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"";
+  xml += byte_order;
+  xml += "\" header_type=\"UInt64\">\n  <PUnstructuredGrid GhostLevel=\"0\">\n";
+  auto declare = [&](const char* type, std::string_view name, int components) {
+    xml += "      <PDataArray type=\"";
+    xml += type;
+    xml += '"';
+    if (!name.empty()) xml += " Name=\"" + xml_escape(name) + '"';
+    if (components != 1) xml += " NumberOfComponents=\"" + std::to_string(components) + '"';
+    xml += "/>\n";
+  };
+  for (Where where : {Where::kPoint, Where::kCell}) {
+    xml += where == Where::kPoint ? "    <PPointData>\n" : "    <PCellData>\n";
+    for (const Array& a : arrays_)
+      if (a.where == where) declare(a.type, a.name, a.components);
+    xml += where == Where::kPoint ? "    </PPointData>\n" : "    </PCellData>\n";
+  }
+  xml += "    <PPoints>\n";
+  declare("Float64", "Points", 3);
+  xml += "    </PPoints>\n";
+  for (const std::string& piece : pieces) xml += "    <Piece Source=\"" + xml_escape(piece) + "\"/>\n";
+  xml += "  </PUnstructuredGrid>\n</VTKFile>\n";
+  return xml;
+}
+
 }  // namespace talus::io

@@ -52,6 +52,9 @@ class VtuGrid {
 
   // The complete .vtu file.
   std::string serialize() const;
+  // A .pvtu file that joins `pieces` (.vtu files, relative to the .pvtu), each with this grid's
+  // arrays: the data of one frame written piece by piece, one per rank.
+  std::string serialize_index(const std::vector<std::string>& pieces) const;
 
  private:
   struct Array {

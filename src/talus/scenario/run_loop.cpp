@@ -112,8 +112,9 @@ void install_stop_handlers() {
 RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   // Under mpirun the run is spread over the ranks (World::distribute); every rank runs the loop,
   // and its outputs, which read the whole system, are the same on every rank. Rank 0 writes
-  // them to the results folder, the others to a scratch folder removed at the end; the frames
-  // and snapshot files, the largest, only rank 0 writes (the others join in gathering them).
+  // them to the results folder, the others to a scratch folder removed at the end. Snapshot
+  // files only rank 0 writes (the others join in gathering them); VTK frames are written in
+  // pieces, one per rank.
   const Communicator& comm = Communicator::world();
   const bool spread = comm.size() > 1;
   RunOptions opt = options;
@@ -148,12 +149,22 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   std::optional<io::VtkOutput> vtk;
   auto frame_due = [&] {
     if (!vtk || world.time() < loop.next_frame - 0.5 * world.settings().time_step) return;
-    const Snapshot snapshot = world.snapshot();
-    if (comm.rank() == 0) vtk->write_frame(snapshot, world.walls());
+    if (world.distributed()) {  // each rank writes its piece
+      const World::SnapshotPiece piece = world.snapshot_piece();
+      const Communicator& ranks = world.communicator();
+      vtk->write_frame_piece(piece.snapshot, piece.owned, world.walls(), ranks.rank(), ranks.size(),
+                             [&] { ranks.barrier(); });
+    } else if (comm.rank() == 0) {
+      vtk->write_frame(world.snapshot(), world.walls());
+    } else {
+      vtk->skip_frame();  // the whole system, before it is spread: rank 0 writes it
+    }
     loop.vtk_times.push_back(world.time());
     loop.next_frame += run.vtk_interval;
   };
-  if (run.vtk_interval > 0) vtk.emplace(opt.out / "vtk", world.shapes());
+  // Every rank writes its pieces into the results folder (created by rank 0 before the
+  // collective distribute() that precedes the first piece).
+  if (run.vtk_interval > 0) vtk.emplace(options.out / "vtk", world.shapes());
   // Snapshot files for analyses of saved output (`talus coarse-grain`, `talus analyze`).
   auto snapshot_due = [&] {
     if (run.snapshot_interval <= 0 || world.time() < loop.next_snapshot - 0.5 * world.settings().time_step) return;

@@ -121,10 +121,17 @@ Diagnostics World::local_diagnostics() const {
 }
 
 Snapshot World::snapshot() const {
-  return distributed() ? gather_snapshot(local_snapshot(), communicator(), next_gid_) : local_snapshot();
+  return distributed() ? gather_snapshot(local_snapshot(PartnerNames::kGlobalId), communicator(), next_gid_)
+                       : local_snapshot(PartnerNames::kRecord);
 }
 
-Snapshot World::local_snapshot() const {
+World::SnapshotPiece World::snapshot_piece() const {
+  SnapshotPiece piece;
+  piece.snapshot = local_snapshot(PartnerNames::kRecordWithGhosts, &piece.owned);
+  return piece;
+}
+
+Snapshot World::local_snapshot(PartnerNames names, std::size_t* owned_records) const {
   Snapshot s;
   s.time = time_;
   s.gravity = settings_.gravity;
@@ -136,13 +143,10 @@ Snapshot World::local_snapshot() const {
   std::vector<std::uint32_t> order(p.owned);
   for (std::size_t i = 0; i < p.owned; ++i) order[i] = static_cast<std::uint32_t>(i);
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return p.gid[a] < p.gid[b]; });
-  // Contacts name their particles by record, or by global id in a distributed world's piece
-  // (gather_snapshot renumbers them).
+  const bool by_gid = names == PartnerNames::kGlobalId;
   std::vector<int> record_of(p.owned);
   s.particles.reserve(p.owned);
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const std::uint32_t i = order[k];
-    record_of[i] = distributed() ? static_cast<int>(p.gid[i]) : static_cast<int>(k);
+  const auto record = [&](std::size_t i) {
     ParticleRecord r;
     r.id = p.gid[i];
     r.species = p.species[i];
@@ -155,14 +159,32 @@ Snapshot World::local_snapshot() const {
     r.velocity = p.velocity[i];
     r.angular_velocity = p.angular_velocity[i];
     r.orientation = p.orientation[i];
-    s.particles.push_back(r);
+    return r;
+  };
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::uint32_t i = order[k];
+    record_of[i] = by_gid ? static_cast<int>(p.gid[i]) : static_cast<int>(k);
+    s.particles.push_back(record(i));
   }
+  if (owned_records) *owned_records = s.particles.size();
+  if (!ready_) return s;
+  // Periodic images are named by their owner; copies from the rank above by their global id,
+  // or by a record of their own appended to the piece.
+  std::vector<int> halo_record(names == PartnerNames::kRecordWithGhosts ? p.size() - p.owned - ghosts_.count() : 0, -1);
+  const auto record_of_neighbor = [&](std::uint32_t j) {
+    if (j < p.owned) return record_of[j];
+    const std::size_t g = j - p.owned;
+    if (g < ghosts_.count()) return record_of[ghosts_.owner(g)];
+    if (by_gid) return static_cast<int>(p.gid[j]);
+    int& r = halo_record[g - ghosts_.count()];
+    if (r < 0) {
+      r = static_cast<int>(s.particles.size());
+      s.particles.push_back(record(j));
+    }
+    return r;
+  };
   if (!ready_) return s;
   // Contact forces are re-evaluated from the stored memories with the current velocities.
-  const auto record_of_neighbor = [&](std::uint32_t j) {
-    if (distributed()) return static_cast<int>(p.gid[j]);
-    return record_of[j < p.owned ? j : ghosts_.owner(j - p.owned)];
-  };
   ContactMemory scratch = pairs_.memory;
   for (std::size_t i = 0; i < pairs_.rows(); ++i)
     for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {

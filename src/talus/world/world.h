@@ -137,6 +137,14 @@ class World {
   // Particles in global id order, contacts with their forces: the whole system, on every rank
   // of a distributed world.
   Snapshot snapshot() const;
+  // This rank's part of the system, for output written piece by piece (.pvtu): its particles in
+  // global id order, then the copies from the rank above that its contacts reach (so that each
+  // contact line has both ends), contacts of the pairs it lists, named by record in the piece.
+  struct SnapshotPiece {
+    Snapshot snapshot;
+    std::size_t owned = 0;  ///< the first `owned` records are this rank's particles
+  };
+  SnapshotPiece snapshot_piece() const;
   // Owned index of each global id (-1 if absent); valid until the next rebuild.
   std::vector<std::int32_t> index_of_gid() const;
 
@@ -209,11 +217,15 @@ class World {
   std::size_t integration_cost() const;  ///< per particle, in sphere updates (velocity_verlet.h)
   double interaction_range() const;
   double particle_skin(double largest_radius) const;  ///< m, the list's skin
-  Domain slab_grid_domain() const;
-  Diagnostics local_diagnostics() const;
-  Snapshot local_snapshot() const;
-  void restore_by_global_ids(const WorldState& state);
-  void take_state_without_lists(const WorldState& state);  ///< the particles and counters; lists emptied  ///< restore_state of a state gathered from ranks  ///< of this rank's particles and the pairs it lists  ///< what this rank's grid covers in a distributed world
+  Domain slab_grid_domain() const;        ///< what this rank's grid covers in a distributed world
+  Diagnostics local_diagnostics() const;  ///< of this rank's particles and the pairs it lists
+  // How a snapshot of this rank names the partners of its contacts: by record (one rank), by
+  // global id (a piece that gather_snapshot joins), or by record with the ghosts from the rank
+  // above appended as records (snapshot_piece).
+  enum class PartnerNames { kRecord, kGlobalId, kRecordWithGhosts };
+  Snapshot local_snapshot(PartnerNames names, std::size_t* owned_records = nullptr) const;
+  void restore_by_global_ids(const WorldState& state);           ///< restore_state of a state gathered from ranks
+  void take_state_without_lists(const WorldState& state);        ///< the particles and counters; lists emptied
   MemoryLayout memory_layout() const;
 
   WorldSettings settings_;
