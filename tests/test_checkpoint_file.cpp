@@ -67,6 +67,40 @@ TEST(CheckpointFile, WorldStateRoundTripsBitForBit) {
   fs::remove_all(dir);
 }
 
+// A state gathered from ranks keeps their layout (cuts and each rank's share), so that a restart
+// on as many ranks can hand every rank its share back; shares that do not add up are refused.
+TEST(CheckpointFile, RankLayoutRoundTripsAndMustAddUp) {
+  const fs::path dir = testing::test_folder();
+  io::Checkpoint c = settled_box_checkpoint();
+  WorldState& w = c.world;
+  w.ranks = 2;
+  w.layout.axis = 2;
+  w.layout.rebalance = true;
+  w.layout.min_width = 2.6e-3;
+  w.layout.cut = {-std::numeric_limits<double>::infinity(), 0.0123, std::numeric_limits<double>::infinity()};
+  const std::uint64_t n = w.particles.owned, pairs = w.pair_gid_i.size(), walls = w.wall_gid.size();
+  w.layout.particles = {n / 3, n - n / 3};
+  w.layout.pair_entries = {pairs / 2, pairs - pairs / 2};
+  w.layout.wall_entries = {walls, 0};
+  io::write_checkpoint(dir / "c.h5", c);
+  const WorldState back = io::read_checkpoint(dir / "c.h5").world;
+  EXPECT_TRUE(back.fits_ranks(2));
+  EXPECT_FALSE(back.fits_ranks(4));
+  EXPECT_EQ(back.layout.axis, 2);
+  EXPECT_TRUE(back.layout.rebalance);
+  EXPECT_EQ(back.layout.min_width, 2.6e-3);
+  EXPECT_EQ(back.layout.cut, w.layout.cut);
+  EXPECT_EQ(back.layout.particles, w.layout.particles);
+  EXPECT_EQ(back.layout.pair_entries, w.layout.pair_entries);
+  EXPECT_EQ(back.layout.wall_entries, w.layout.wall_entries);
+
+  w.layout.particles[1] += 1;
+  io::write_checkpoint(dir / "bad.h5", c);
+  EXPECT_EQ(load_error(dir / "bad.h5"), (dir / "bad.h5").string() +
+                                            ": rank layout does not add up to the stored arrays");
+  fs::remove_all(dir);
+}
+
 TEST(CheckpointFile, RestoredWorldStepsOnBitForBit) {
   io::ScenarioFile file = io::ScenarioFile::from_string(testing::kSettlingBox, "case.toml");
   Scenario original = load_scenario(file);

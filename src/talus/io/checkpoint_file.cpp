@@ -176,6 +176,15 @@ void write_world(Hdf5Writer& h5, const WorldState& s) {
   h5.write("contacts/walls/force", flat(s.wall_entry_force), 3);
   write_memory(h5, "contacts/walls", s.wall_memory);
   write_points(h5, "contacts/walls/points", s.wall_sub);
+  const WorldState::RankLayout& l = s.layout;
+  if (!l.cut.empty()) {  // a state gathered from ranks: their layout, for a restart on as many
+    h5.write("world/layout/cut", l.cut);
+    h5.write("world/layout/slabs", std::vector<double>{static_cast<double>(l.axis), l.rebalance ? 1.0 : 0.0, l.min_width});
+    std::vector<std::uint64_t> shares;
+    for (std::size_t r = 0; r < l.particles.size(); ++r)
+      shares.insert(shares.end(), {l.particles[r], l.pair_entries[r], l.wall_entries[r]});
+    h5.write("world/layout/shares", shares, 3);
+  }
 }
 
 WorldState read_world(const Hdf5Reader& h5) {
@@ -228,6 +237,27 @@ WorldState read_world(const Hdf5Reader& h5) {
   s.wall_entry_force = vec3s(h5.read_double("contacts/walls/force", 3));
   s.wall_memory = read_memory(h5, "contacts/walls");
   s.wall_sub = read_points(h5, "contacts/walls/points");
+  if (h5.has("world/layout/cut")) {
+    WorldState::RankLayout& l = s.layout;
+    l.cut = h5.read_double("world/layout/cut");
+    const std::vector<double> slabs = h5.read_double("world/layout/slabs");
+    const std::vector<std::uint64_t> shares = h5.read_u64("world/layout/shares", 3);
+    if (slabs.size() != 3 || !(slabs[0] == 0 || slabs[0] == 1 || slabs[0] == 2) || shares.size() != 3 * s.ranks ||
+        l.cut.size() != s.ranks + 1)
+      throw std::runtime_error(h5.path().string() + ": rank layout damaged");
+    l.axis = static_cast<int>(slabs[0]);
+    l.rebalance = slabs[1] != 0;
+    l.min_width = slabs[2];
+    std::uint64_t particles = 0, pairs = 0, walls = 0;
+    for (std::size_t r = 0; r < s.ranks; ++r) {
+      l.particles.push_back(shares[3 * r]);
+      l.pair_entries.push_back(shares[3 * r + 1]);
+      l.wall_entries.push_back(shares[3 * r + 2]);
+      particles += shares[3 * r], pairs += shares[3 * r + 1], walls += shares[3 * r + 2];
+    }
+    if (particles != s.particles.owned || pairs != s.pair_gid_i.size() || walls != s.wall_gid.size())
+      throw std::runtime_error(h5.path().string() + ": rank layout does not add up to the stored arrays");
+  }
   return s;
 }
 

@@ -31,7 +31,7 @@ io::Checkpoint capture_checkpoint(Scenario& sc, const LoopState& loop, const std
 }
 
 LoopState restore_checkpoint(Scenario& sc, const io::Checkpoint& c, const std::string& source,
-                             const std::vector<std::string>& columns) {
+                             const std::vector<std::string>& columns, const Communicator* ranks) {
   auto fail = [&](const std::string& what) -> void {
     throw io::InputError(source + ": " + what);
   };
@@ -50,7 +50,7 @@ LoopState restore_checkpoint(Scenario& sc, const io::Checkpoint& c, const std::s
         fail("checkpoint has observer \"" + observers[k].at("name").get<std::string>() + "\" where the scenario has \"" +
              sc.observers[k]->name() + "\"");
 
-    sc.world->restore_state(c.world);
+    sc.world->restore_state(c.world, ranks);
     for (std::size_t k = 0; k < pours.size(); ++k) sc.pours[k].restore(pours[k]);
     for (std::size_t k = 0; k < observers.size(); ++k) sc.observers[k]->restore(observers[k].at("state"));
 

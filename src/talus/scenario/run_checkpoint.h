@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "talus/io/checkpoint_file.h"
+#include "talus/parallel/communicator.h"
 #include "talus/scenario/scenario.h"
 
 namespace talus {
@@ -29,8 +30,10 @@ io::Checkpoint capture_checkpoint(Scenario& scenario, const LoopState& loop, con
 
 // Puts the scenario's World, pours and observers into the checkpoint's state and returns the
 // loop's. Throws io::InputError "SOURCE: what does not fit" when the checkpoint was written for
-// another scenario (other walls, pours, observers, species or time-series columns).
+// another scenario (other walls, pours, observers, species or time-series columns). `ranks`: the
+// ranks the run goes on over (World::restore_state): a checkpoint written on as many goes on
+// spread as it was, bit for bit.
 LoopState restore_checkpoint(Scenario& scenario, const io::Checkpoint& checkpoint, const std::string& source,
-                             const std::vector<std::string>& columns);
+                             const std::vector<std::string>& columns, const Communicator* ranks = nullptr);
 
 }  // namespace talus

@@ -185,7 +185,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
     checkpoint_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
   if (opt.restart) {
-    loop = restore_checkpoint(sc, *opt.restart, opt.restart_source, columns);
+    loop = restore_checkpoint(sc, *opt.restart, opt.restart_source, columns, spread ? &comm : nullptr);
     guard.set_removed(loop.particles_left_domain);
     for (std::size_t r = 0; r + columns.size() <= loop.rows.size(); r += columns.size())
       csv.row(std::span<const double>(loop.rows.data() + r, columns.size()));
@@ -202,7 +202,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
     loop.next_output = world.time() + run.output_interval;
     loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
-  if (spread) world.distribute(comm);
+  if (spread && !world.distributed()) world.distribute(comm);  // a restart on the same ranks is spread already
   const std::uint64_t first_step = world.step_count();
   const double dt = world.settings().time_step;
   // Steps run in batches (World::run closes one step and opens the next in one pass over

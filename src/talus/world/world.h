@@ -131,7 +131,10 @@ class World {
   // set-up (particles added or walls changed since the last step); restore_state() puts a World
   // built from the same scenario back into a captured state, so that it steps on bit for bit.
   WorldState capture_state();
-  void restore_state(const WorldState& state);
+  // `ranks`: the ranks the run goes on over. A state gathered from as many ranks is spread over
+  // them as it was, each rank replaying its last build, and goes on bit for bit; any other state
+  // is restored whole (then distribute() spreads it, to round-off).
+  void restore_state(const WorldState& state, const Communicator* ranks = nullptr);
 
   Diagnostics diagnostics() const;  ///< of the whole system, on every rank of a distributed world
   // Particles in global id order, contacts with their forces: the whole system, on every rank
@@ -225,6 +228,7 @@ class World {
   enum class PartnerNames { kRecord, kGlobalId, kRecordWithGhosts };
   Snapshot local_snapshot(PartnerNames names, std::size_t* owned_records = nullptr) const;
   void restore_by_global_ids(const WorldState& state);           ///< restore_state of a state gathered from ranks
+  void replay_last_build(const WorldState& state);               ///< restore_state of one rank's state
   void take_state_without_lists(const WorldState& state);        ///< the particles and counters; lists emptied
   MemoryLayout memory_layout() const;
 

@@ -1,6 +1,7 @@
 // World::capture_state and World::restore_state: the one place that knows which members make
 // up the state of a World (see world_state.h for why the lists are rebuilt, not stored).
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -89,7 +90,12 @@ void join_pieces(WorldState& s, const Communicator& comm) {
   WorldState j;
   ParticleStore& q = j.particles;
   ByteReader in(all);
+  WorldState::RankLayout& layout = s.layout;
+  const auto share = [](std::vector<std::uint64_t>& shares, std::size_t before, std::size_t after) {
+    shares.push_back(after - before);
+  };
   while (!in.done()) {
+    const std::size_t particles = q.position.size(), pairs = j.pair_gid_i.size(), walls = j.wall_gid.size();
     take(in, q.position), take(in, q.velocity), take(in, q.angular_velocity), take(in, q.force), take(in, q.torque);
     take(in, q.orientation), take(in, q.radius), take(in, q.inv_mass), take(in, q.inv_inertia), take(in, q.mass);
     take(in, q.species), take(in, q.shape), take(in, q.gid), take(in, j.position_at_build);
@@ -98,6 +104,9 @@ void join_pieces(WorldState& s, const Communicator& comm) {
     take(in, j.wall_gid), take(in, j.wall_index), take(in, j.wall_entry_force);
     take(in, j.wall_memory.spring), take(in, j.wall_memory.normal_prev), take(in, j.wall_memory.rolling);
     take_lists(in, j.pair_sub), take_lists(in, j.wall_sub);
+    share(layout.particles, particles, q.position.size());
+    share(layout.pair_entries, pairs, j.pair_gid_i.size());
+    share(layout.wall_entries, walls, j.wall_gid.size());
   }
   q.owned = q.position.size();
   s.particles = std::move(q);
@@ -148,11 +157,59 @@ WorldState World::capture_state() {
   s.wall_memory = wall_pairs_.memory;
   s.wall_entry_force = wall_pairs_.force_on_wall;
   s.wall_sub = wall_sub_.lists();
-  if (distributed()) join_pieces(s, communicator());
+  if (distributed()) {
+    s.layout.axis = slabs_.axis;
+    s.layout.rebalance = slabs_.rebalance;
+    s.layout.min_width = slabs_.min_width;
+    s.layout.cut = slabs_.cut;
+    join_pieces(s, communicator());
+  }
   return s;
 }
 
-void World::restore_state(const WorldState& s) {
+namespace {
+
+// Rank r's share of a state joined rank after rank (WorldState::layout).
+WorldState share_of_rank(const WorldState& s, int r) {
+  const WorldState::RankLayout& l = s.layout;
+  const auto start = [r](const std::vector<std::uint64_t>& shares) {
+    return std::accumulate(shares.begin(), shares.begin() + r, std::uint64_t{0});
+  };
+  const auto slice = [](auto& v, std::uint64_t from, std::uint64_t count) {
+    if (v.empty()) return;  // an array the run does not keep (memories of a model, shapes' points)
+    require(from + count <= v.size(), "a rank's share runs past the stored arrays");
+    std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(from), v.end());
+    v.resize(count);
+  };
+  WorldState share = s;
+  const std::uint64_t p0 = start(l.particles), pn = l.particles[r];
+  ParticleStore& p = share.particles;
+  slice(p.position, p0, pn), slice(p.velocity, p0, pn), slice(p.angular_velocity, p0, pn), slice(p.force, p0, pn);
+  slice(p.torque, p0, pn), slice(p.orientation, p0, pn), slice(p.radius, p0, pn), slice(p.inv_mass, p0, pn);
+  slice(p.inv_inertia, p0, pn), slice(p.mass, p0, pn), slice(p.species, p0, pn), slice(p.shape, p0, pn);
+  slice(p.gid, p0, pn), slice(share.position_at_build, p0, pn);
+  p.owned = pn;
+  const std::uint64_t e0 = start(l.pair_entries), en = l.pair_entries[r];
+  slice(share.pair_gid_i, e0, en), slice(share.pair_gid_j, e0, en), slice(share.pair_sub, e0, en);
+  slice(share.pair_memory.spring, e0, en), slice(share.pair_memory.normal_prev, e0, en);
+  slice(share.pair_memory.rolling, e0, en);
+  const std::uint64_t w0 = start(l.wall_entries), wn = l.wall_entries[r];
+  slice(share.wall_gid, w0, wn), slice(share.wall_index, w0, wn), slice(share.wall_entry_force, w0, wn);
+  slice(share.wall_sub, w0, wn), slice(share.wall_memory.spring, w0, wn);
+  slice(share.wall_memory.normal_prev, w0, wn), slice(share.wall_memory.rolling, w0, wn);
+  share.ranks = 1;
+  share.layout = {};
+  return share;
+}
+
+}  // namespace
+
+bool WorldState::fits_ranks(std::uint64_t n) const {
+  return n == ranks && n > 1 && layout.cut.size() == n + 1 && layout.particles.size() == n &&
+         layout.pair_entries.size() == n && layout.wall_entries.size() == n;
+}
+
+void World::restore_state(const WorldState& s, const Communicator* ranks) {
   const std::size_t n = s.particles.owned;
   check_particles(s.particles, table_.species(), shapes_.size(), s.next_gid);
   require(s.position_at_build.size() == n, "positions of the last neighbour-list build missing");
@@ -161,12 +218,24 @@ void World::restore_state(const WorldState& s) {
     require(w.material >= 0 && w.material < table_.wall_materials(), "wall material not in the scenario");
   require(s.skin > 0, "neighbour-list skin must be positive");
   require(!distributed(), "a distributed world is restored before it is spread over the ranks");
+  if (ranks && s.fits_ranks(static_cast<std::uint64_t>(ranks->size()))) {
+    const WorldState::RankLayout& l = s.layout;
+    slabs_ = SlabDecomposition::with_cuts(*ranks, settings_.domain, l.axis, l.cut, l.min_width);
+    slabs_.rebalance = false;  // the replayed build keeps the cuts it made
+    replay_last_build(share_of_rank(s, ranks->rank()));
+    slabs_.rebalance = l.rebalance;
+    return;
+  }
   if (s.ranks > 1) {
     restore_by_global_ids(s);
     return;
   }
+  replay_last_build(s);
+}
 
-  // Replay the last build: same positions, same order, same constants give the same lists.
+void World::replay_last_build(const WorldState& s) {
+  // Same positions, same order, same constants (and in a distributed world the same cuts and
+  // the same neighbours' particles) give the same lists.
   take_state_without_lists(s);
   particles_.position = s.position_at_build;
   time_ = s.time_at_build;
@@ -178,6 +247,7 @@ void World::restore_state(const WorldState& s) {
   std::copy(s.particles.position.begin(), s.particles.position.end(), particles_.position.begin());
   ghosts_.update_positions(particles_);
   ghosts_.update_velocities(particles_);
+  if (distributed()) halo_.forward(particles_);
   time_ = s.time;
   rebuilds_ = s.rebuilds;
   wall_force_ = s.wall_force;

@@ -25,9 +25,21 @@ struct WorldState {
   // rank after rank.
   ParticleStore particles;
   // The ranks the state was gathered from. Above 1 the particles are in no single build's
-  // order: a restore builds the lists afresh and finds each memory by the global ids of its
-  // pair, so the run goes on to round-off, not to the bit.
+  // order: a restore on another number of ranks builds the lists afresh and finds each memory by
+  // the global ids of its pair, so the run goes on to round-off, not to the bit. On as many
+  // ranks, each rank takes its share back (`layout`) and replays its last build: bit for bit.
   std::uint64_t ranks = 1;
+  struct RankLayout {
+    int axis = 0;               ///< the slabs' axis
+    bool rebalance = false;     ///< the cuts follow the particles
+    double min_width = 0;       ///< m, no slab narrower
+    std::vector<double> cut;    ///< m, ranks + 1 values, those of the last build
+    // Each rank's share of the joined arrays: particles (and position_at_build), particle-pair
+    // entries, particle-wall entries.
+    std::vector<std::uint64_t> particles, pair_entries, wall_entries;
+  };
+  RankLayout layout;  ///< empty (no cuts) for one rank and in files that predate it
+  bool fits_ranks(std::uint64_t n) const;  ///< gathered from n > 1 ranks, with their layout
   std::uint32_t next_gid = 0;
   double time = 0;                  ///< s
   std::uint64_t steps = 0;
