@@ -234,12 +234,12 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   UninitializedArray<PlacedPart, 1> sphere_i, sphere_j;
   if (!has_box_i) place_part(si.parts[0], {p.position[i], p.orientation[i]}, sphere_i[0]);
   if (!has_box_j) place_part(sj.parts[0], {p.position[j], p.orientation[j]}, sphere_j[0]);
-  const PlacedPart* placed_i = has_box_i ? placed_.parts(i) : sphere_i.data();
-  const PlacedPart* placed_j = has_box_j ? placed_.parts(j) : sphere_j.data();
+  const PlacedPart* placed_i = has_box_i ? shaped_.placed.parts(i) : sphere_i.data();
+  const PlacedPart* placed_j = has_box_j ? shaped_.placed.parts(j) : sphere_j.data();
   // A pair that touched last step still touches, almost always: its body boxes are not tested
   // (the part budgets then give the gap if it has parted).
   if (has_box_i && has_box_j && previous.empty() &&
-      (gap = body_box_gap(si, placed_.body(i), sj, placed_.body(j))) > 0) {
+      (gap = body_box_gap(si, shaped_.placed.body(i), sj, shaped_.placed.body(j))) > 0) {
     if (profile) {
       CompositeStats& st = composite_stats_slot();
       ++st.body_pairs;
@@ -343,7 +343,7 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
   const HalfSpace plane{wall.normal, dot(wall.normal, origin)};  // solid behind the wall, normal into the free side
   const ContactMotion motion{p.velocity[i], p.angular_velocity[i], wall_velocity, Vec3{}};
   ContactResult total;
-  const PlacedPart* placed = placed_.parts(i);
+  const PlacedPart* placed = shaped_.placed.parts(i);
   for (std::size_t a = 0; a < si.parts.size(); ++a) {
     // The part's bounding sphere clears the plane: no corner can touch it.
     if (dot(placed[a].box.centre, plane.normal) - plane.offset >= si.parts[a].shape.bounding_radius) continue;
@@ -396,29 +396,29 @@ template <TangentialModel Model>
 void World::composite_pair_forces(double memory_dt) {
   ScopedPhase phase(timer_, Phase::pair_forces);
   ParticleStore& p = particles_;
-  PairList& list = pairs_;
+  PairList& list = lists_.pairs;
   ContactMemory& mem = list.memory;
   constexpr long kRowsPerBlock = SubContactStore::kRowsPerBlock;
   const long rows = static_cast<long>(list.rows());
   const long blocks = (rows + kRowsPerBlock - 1) / kRowsPerBlock;
-  if (block_loads_.size() < static_cast<std::size_t>(blocks)) block_loads_.resize(blocks);
-  if (!budgets_.matches(list)) budgets_.reset(list, p, shapes_);
-  pair_sub_.follow(list);
-  double* budget = budgets_.body();
+  if (shaped_.block_loads.size() < static_cast<std::size_t>(blocks)) shaped_.block_loads.resize(blocks);
+  if (!shaped_.budgets.matches(list)) shaped_.budgets.reset(list, p, shapes_);
+  shaped_.pair_points.follow(list);
+  double* budget = shaped_.budgets.body();
   const std::size_t bodies = p.position.size();  // ghosts receive loads too (folded later)
-  auto range_of = [bodies](std::uint32_t body) { return static_cast<std::size_t>(body) * kLoadRanges / bodies; };
+  auto range_of = [bodies](std::uint32_t body) { return static_cast<std::size_t>(body) * ShapedContacts::kLoadRanges / bodies; };
   const int threads = worth_parallel(16 * p.owned) ? omp_get_max_threads() : 1;
-  block_schedule_.plan(blocks, threads);
+  shaped_.block_schedule.plan(blocks, threads);
   const bool profiling = composite_stats_enabled();
 #pragma omp parallel num_threads(threads)
   {
     const int thread = omp_get_thread_num();
     std::vector<std::uint32_t> awake;  // entries of the block's rows worth a look, in order
     std::array<std::uint32_t, kRowsPerBlock + 1> awake_start;  // per row of the block, into `awake`
-    for (long block = 0; block_schedule_.next(thread, block);) {
+    for (long block = 0; shaped_.block_schedule.next(thread, block);) {
       const std::uint64_t block_start = __rdtsc();
-      BlockLoads& loads = block_loads_[block];
-      for (std::vector<BodyLoad>& range : loads) range.clear();
+      ShapedContacts::BlockLoads& loads = shaped_.block_loads[block];
+      for (std::vector<ShapedContacts::BodyLoad>& range : loads) range.clear();
       const long last = std::min(rows, (block + 1) * kRowsPerBlock);
       // What the awake pairs of the block will read first lies in scattered lines (the part-pair
       // budgets, the neighbour's placed parts): asking for them all at once lets the cache misses
@@ -431,13 +431,13 @@ void World::composite_pair_forces(double memory_dt) {
       for (long row = first_row; row < last; ++row) {
         const auto i = static_cast<std::uint32_t>(row);
         awake_start[row - first_row] = static_cast<std::uint32_t>(awake.size());
-        const double travel_i = placed_.travel(i);
+        const double travel_i = shaped_.placed.travel(i);
         const auto wake = [&](std::uint32_t e) {
           const std::uint32_t j = list.neighbor(e);
           awake.push_back(e);
-          budgets_.prefetch_parts(e);
+          shaped_.budgets.prefetch_parts(e);
           if (p.shape[j] != 0)  // the two lines of every part
-            prefetch_lines(placed_.parts(j), placed_.part_count(j) * sizeof(PlacedPart));
+            prefetch_lines(shaped_.placed.parts(j), shaped_.placed.part_count(j) * sizeof(PlacedPart));
         };
         std::uint32_t e = list.row_begin(i);
         const std::uint32_t row_end = list.row_end(i);
@@ -446,7 +446,7 @@ void World::composite_pair_forces(double memory_dt) {
         const __m256d travel_i4 = _mm256_set1_pd(travel_i);
         for (; e + 4 <= row_end; e += 4) {
           const __m128i j4 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(list.neighbors() + e));
-          const __m256d travel_j = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), placed_.travels(), j4,
+          const __m256d travel_j = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), shaped_.placed.travels(), j4,
                                                             _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
           const __m256d travelled = _mm256_add_pd(travel_i4, travel_j);
           // Awake unless travelled < budget, exactly as the scalar test (NaN stays awake).
@@ -455,23 +455,23 @@ void World::composite_pair_forces(double memory_dt) {
         }
 #endif
         for (; e < row_end; ++e)
-          if (!(travel_i + placed_.travel(list.neighbor(e)) < budget[e])) wake(e);
+          if (!(travel_i + shaped_.placed.travel(list.neighbor(e)) < budget[e])) wake(e);
       }
       awake_start[last - first_row] = static_cast<std::uint32_t>(awake.size());
-      pair_sub_.start_block(block);
-      std::vector<SubContact>& points = pair_sub_.next_points(block);
+      shaped_.pair_points.start_block(block);
+      std::vector<SubContact>& points = shaped_.pair_points.next_points(block);
       for (long row = first_row; row < last; ++row) {
         const auto i = static_cast<std::uint32_t>(row);
         Vec3 fi, ti;
         for (std::uint32_t k = awake_start[row - first_row]; k < awake_start[row - first_row + 1]; ++k) {
           const std::uint32_t e = awake[k];
           const std::uint32_t j = list.neighbor(e);
-          const double travelled = placed_.travel(i) + placed_.travel(j);
+          const double travelled = shaped_.placed.travel(i) + shaped_.placed.travel(j);
           const Vec3 d = p.position[i] - p.position[j];
           const double reach = p.radius[i] + p.radius[j];
           const double dist2 = norm2(d);
           if (dist2 >= reach * reach) {  // bounding spheres apart: a later contact starts afresh
-            pair_sub_.forget(block, e);
+            shaped_.pair_points.forget(block, e);
             if (mem.active(e)) mem.clear(e);
             budget[e] = travelled + (std::sqrt(dist2) - reach);
             continue;
@@ -480,11 +480,11 @@ void World::composite_pair_forces(double memory_dt) {
           if (p.shape[i] != 0 || p.shape[j] != 0) {
             double gap = 0;
             const std::size_t first = points.size();
-            r = profiling ? composite_pair<Model, true>(i, j, pair_sub_.take(block, e), points, memory_dt,
-                                                        travelled, budgets_.parts(e), gap)
-                          : composite_pair<Model, false>(i, j, pair_sub_.take(block, e), points, memory_dt,
-                                                         travelled, budgets_.parts(e), gap);
-            pair_sub_.record(e, first, points.size());
+            r = profiling ? composite_pair<Model, true>(i, j, shaped_.pair_points.take(block, e), points, memory_dt,
+                                                        travelled, shaped_.budgets.parts(e), gap)
+                          : composite_pair<Model, false>(i, j, shaped_.pair_points.take(block, e), points, memory_dt,
+                                                         travelled, shaped_.budgets.parts(e), gap);
+            shaped_.pair_points.record(e, first, points.size());
             if (points.size() == first) {
               budget[e] = travelled + gap;
               continue;
@@ -500,14 +500,14 @@ void World::composite_pair_forces(double memory_dt) {
         }
         if (fi != Vec3{} || ti != Vec3{}) loads[range_of(i)].push_back({i, fi, ti});
       }
-      pair_sub_.finish_block(block);
-      block_schedule_.record(block, __rdtsc() - block_start);
+      shaped_.pair_points.finish_block(block);
+      shaped_.block_schedule.record(block, __rdtsc() - block_start);
     }
 #pragma omp barrier
 #pragma omp for schedule(static)
-    for (int range = 0; range < kLoadRanges; ++range)
+    for (int range = 0; range < ShapedContacts::kLoadRanges; ++range)
       for (long block = 0; block < blocks; ++block)
-        for (const BodyLoad& l : block_loads_[block][range]) {
+        for (const ShapedContacts::BodyLoad& l : shaped_.block_loads[block][range]) {
           p.force[l.body] += l.force;
           p.torque[l.body] += l.torque;
         }

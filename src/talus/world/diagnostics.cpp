@@ -86,12 +86,12 @@ Diagnostics World::local_diagnostics() const {
       d.max_overlap_ratio = std::max(d.max_overlap_ratio, s.overlap / radius);
     }
   };
-  for (std::size_t i = 0; i < pairs_.rows(); ++i)
-    for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
-      const std::uint32_t j = pairs_.neighbor(e);
+  for (std::size_t i = 0; i < lists_.pairs.rows(); ++i)
+    for (std::uint32_t e = lists_.pairs.row_begin(i); e < lists_.pairs.row_end(i); ++e) {
+      const std::uint32_t j = lists_.pairs.neighbor(e);
       if (p.shape[i] != 0 || p.shape[j] != 0) {
-        d.contacts += pair_sub_.of(e).size();
-        add_points(pair_sub_.of(e), table_.pair(p.species[i], p.species[j]), std::min(p.radius[i], p.radius[j]));
+        d.contacts += shaped_.pair_points.of(e).size();
+        add_points(shaped_.pair_points.of(e), table_.pair(p.species[i], p.species[j]), std::min(p.radius[i], p.radius[j]));
         continue;
       }
       const double reach = p.radius[i] + p.radius[j];
@@ -99,15 +99,15 @@ Diagnostics World::local_diagnostics() const {
       if (overlap <= 0) continue;
       ++d.contacts;
       add_contact_energy(d, table_.pair(p.species[i], p.species[j]), overlap, std::min(p.radius[i], p.radius[j]),
-                         p.radius[i] * p.radius[j] / reach, pairs_.memory, e);
+                         p.radius[i] * p.radius[j] / reach, lists_.pairs.memory, e);
     }
-  for (std::size_t i = 0; i < wall_pairs_.rows(); ++i)
-    for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e) {
-      const Wall& w = walls_[wall_pairs_.wall(e)];
+  for (std::size_t i = 0; i < lists_.walls.rows(); ++i)
+    for (std::uint32_t e = lists_.walls.row_begin(i); e < lists_.walls.row_end(i); ++e) {
+      const Wall& w = walls_[lists_.walls.wall(e)];
       if (!w.active(time_) || p.inv_mass[i] == 0.0) continue;
       if (p.shape[i] != 0) {
-        d.wall_contacts += wall_sub_.of(e).size();
-        add_points(wall_sub_.of(e), table_.wall(p.species[i], w.material), p.radius[i]);
+        d.wall_contacts += shaped_.wall_points.of(e).size();
+        add_points(shaped_.wall_points.of(e), table_.wall(p.species[i], w.material), p.radius[i]);
         continue;
       }
       const Vec3 origin = w.origin_at(time_);
@@ -115,7 +115,7 @@ Diagnostics World::local_diagnostics() const {
       if (overlap <= 0 || !wall_faces(w, origin, p.position[i], 0.0)) continue;
       ++d.wall_contacts;
       add_contact_energy(d, table_.wall(p.species[i], w.material), overlap, p.radius[i], p.radius[i],
-                         wall_pairs_.memory, e);
+                         lists_.walls.memory, e);
     }
   return d;
 }
@@ -170,13 +170,13 @@ Snapshot World::local_snapshot(PartnerNames names, std::size_t* owned_records) c
   if (!ready_) return s;
   // Periodic images are named by their owner; copies from the rank above by their global id,
   // or by a record of their own appended to the piece.
-  std::vector<int> halo_record(names == PartnerNames::kRecordWithGhosts ? p.size() - p.owned - ghosts_.count() : 0, -1);
+  std::vector<int> halo_record(names == PartnerNames::kRecordWithGhosts ? p.size() - p.owned - lists_.ghosts.count() : 0, -1);
   const auto record_of_neighbor = [&](std::uint32_t j) {
     if (j < p.owned) return record_of[j];
     const std::size_t g = j - p.owned;
-    if (g < ghosts_.count()) return record_of[ghosts_.owner(g)];
+    if (g < lists_.ghosts.count()) return record_of[lists_.ghosts.owner(g)];
     if (by_gid) return static_cast<int>(p.gid[j]);
-    int& r = halo_record[g - ghosts_.count()];
+    int& r = halo_record[g - lists_.ghosts.count()];
     if (r < 0) {
       r = static_cast<int>(s.particles.size());
       s.particles.push_back(record(j));
@@ -185,12 +185,12 @@ Snapshot World::local_snapshot(PartnerNames names, std::size_t* owned_records) c
   };
   if (!ready_) return s;
   // Contact forces are re-evaluated from the stored memories with the current velocities.
-  ContactMemory scratch = pairs_.memory;
-  for (std::size_t i = 0; i < pairs_.rows(); ++i)
-    for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
-      const std::uint32_t j = pairs_.neighbor(e);
+  ContactMemory scratch = lists_.pairs.memory;
+  for (std::size_t i = 0; i < lists_.pairs.rows(); ++i)
+    for (std::uint32_t e = lists_.pairs.row_begin(i); e < lists_.pairs.row_end(i); ++e) {
+      const std::uint32_t j = lists_.pairs.neighbor(e);
       if (p.shape[i] != 0 || p.shape[j] != 0) {
-        for (const SubContact& sc : pair_sub_.of(e)) {
+        for (const SubContact& sc : shaped_.pair_points.of(e)) {
           ContactRecord rec;
           rec.i = record_of[i];
           rec.j = record_of_neighbor(j);
@@ -228,15 +228,15 @@ Snapshot World::local_snapshot(PartnerNames names, std::size_t* owned_records) c
       rec.overlap = g.overlap;
       s.contacts.push_back(rec);
     }
-  for (std::size_t i = 0; i < wall_pairs_.rows(); ++i)
-    for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e) {
-      const Wall& w = walls_[wall_pairs_.wall(e)];
+  for (std::size_t i = 0; i < lists_.walls.rows(); ++i)
+    for (std::uint32_t e = lists_.walls.row_begin(i); e < lists_.walls.row_end(i); ++e) {
+      const Wall& w = walls_[lists_.walls.wall(e)];
       if (!w.active(time_) || p.inv_mass[i] == 0.0) continue;
       if (p.shape[i] != 0) {
-        for (const SubContact& sc : wall_sub_.of(e)) {
+        for (const SubContact& sc : shaped_.wall_points.of(e)) {
           ContactRecord rec;
           rec.i = record_of[i];
-          rec.wall = wall_pairs_.wall(e);
+          rec.wall = lists_.walls.wall(e);
           rec.point = sc.point;
           rec.normal = sc.normal_prev;
           rec.force = sc.force;
@@ -250,10 +250,10 @@ Snapshot World::local_snapshot(PartnerNames names, std::size_t* owned_records) c
       if (overlap <= 0 || !wall_faces(w, origin, p.position[i], 0.0)) continue;
       ContactRecord rec;
       rec.i = record_of[i];
-      rec.wall = wall_pairs_.wall(e);
+      rec.wall = lists_.walls.wall(e);
       rec.normal = w.normal;
       rec.point = p.position[i] - w.normal * (p.radius[i] - 0.5 * overlap);
-      rec.force = -wall_pairs_.force_on_wall[e];
+      rec.force = -lists_.walls.force_on_wall[e];
       rec.overlap = overlap;
       s.contacts.push_back(rec);
     }

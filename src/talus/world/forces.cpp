@@ -18,7 +18,7 @@ void World::compute_forces(double memory_dt) {
   if (has_composites()) {
     {
       ScopedPhase phase(timer_, Phase::placement);
-      placed_.place(p, shapes_);
+      shaped_.placed.place(p, shapes_);
     }
     with_tangential_model(settings_.tangential_model, [&](auto model) { composite_pair_forces<model.value>(memory_dt); });
   } else {
@@ -32,9 +32,9 @@ void World::compute_forces(double memory_dt) {
 void World::fold_ghost_forces() {
   if (distributed()) {
     ScopedPhase phase(timer_, Phase::exchange);
-    halo_.reverse(particles_);
+    spread_.halo.reverse(particles_);
   }
-  ghosts_.fold_forces(particles_);
+  lists_.ghosts.fold_forces(particles_);
 }
 
 double World::compute_forces_ending_step(double memory_dt, const StepEnd& end) {
@@ -43,21 +43,21 @@ double World::compute_forces_ending_step(double memory_dt, const StepEnd& end) {
   with_tangential_model(settings_.tangential_model,
                         [&](auto model) { max_d2 = pair_forces<model.value>(memory_dt, &end); });
   if (walls_.empty() && !distributed()) {  // the owners of ghosts, the only late particles, ended in the pass
-    ghosts_fresh_ = end.next_step;  // for move_to_next_step, which follows at once
+    ends_.ghosts_fresh = end.next_step;  // for move_to_next_step, which follows at once
     return max_d2;
   }
   fold_ghost_forces();
   if (!walls_.empty())
     with_tangential_model(settings_.tangential_model, [&](auto model) { wall_forces<model.value>(memory_dt); });
   ScopedPhase phase(timer_, Phase::integrate);
-  return std::max(max_d2, end_step(p, late_, end));
+  return std::max(max_d2, end_step(p, ends_.late, end));
 }
 
 double World::end_owner_step(std::uint32_t k, const StepEnd& end) {
   ParticleStore& p = particles_;
-  ghosts_.fold_into_owner(p, k);
-  const double d2 = end_step_of(p, ghosts_.owner_at(k), end);
-  ghosts_.refresh_ghosts_of(p, k);
+  lists_.ghosts.fold_into_owner(p, k);
+  const double d2 = end_step_of(p, lists_.ghosts.owner_at(k), end);
+  lists_.ghosts.refresh_ghosts_of(p, k);
   return d2;
 }
 
@@ -65,13 +65,13 @@ template <TangentialModel Model>
 double World::pair_forces(double memory_dt, const StepEnd* end) {
   ScopedPhase phase(timer_, Phase::pair_forces);
   ParticleStore& p = particles_;
-  const PairList& list = pairs_;
-  ContactMemory& mem = pairs_.memory;
+  const PairList& list = lists_.pairs;
+  ContactMemory& mem = lists_.pairs.memory;
   const auto data = [](auto& v) { return v.empty() ? nullptr : v.data(); };
   const SpherePairArrays arrays{p.position.data(), p.velocity.data(), p.angular_velocity.data(), p.radius.data(),
                                 p.inv_mass.data(), p.species.data(), list.neighbors(), list.row_offsets(),
                                 p.force.data(), p.torque.data(), data(mem.spring), data(mem.normal_prev),
-                                data(mem.rolling), pairs_.remembered(), static_cast<std::uint32_t>(p.owned),
+                                data(mem.rolling), lists_.pairs.remembered(), static_cast<std::uint32_t>(p.owned),
                                 list.forward_reach()};
   const bool parallel = worth_parallel(p.owned);
   const std::vector<std::uint32_t>& chunk = list.slab_chunks();
@@ -85,11 +85,11 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
   // are done (pairs within a slab point either way, to the next slab only forwards): at once,
   // except the first slab of an even chunk after the first, which the odd chunk before it
   // ends after writing to it, and the late particles (ghost owners, wall contacts).
-  const StepEndKind* kind = step_end_.data();
+  const StepEndKind* kind = ends_.kind.data();
   const auto end_slab = [&](std::uint32_t s) {
     double d2 = end_step(p, list.slab_begin(s), list.slab_begin(s + 1), *end, kind);
-    for (std::uint32_t n = inline_owner_start_[s]; n < inline_owner_start_[s + 1]; ++n)
-      d2 = std::max(d2, end_owner_step(inline_owner_[n], *end));
+    for (std::uint32_t n = ends_.inline_owner_start[s]; n < ends_.inline_owner_start[s + 1]; ++n)
+      d2 = std::max(d2, end_owner_step(ends_.inline_owner[n], *end));
     return d2;
   };
   const std::size_t chunk_count = static_cast<std::size_t>(std::max(chunks, 0L));
@@ -109,24 +109,24 @@ double World::pair_forces(double memory_dt, const StepEnd* end) {
     done[c].store(1, std::memory_order_release);
     return d2;
   };
-  // Without walls the owners of ghosts across the slab axis's faces (World::late_owner_) end
+  // Without walls the owners of ghosts across the slab axis's faces (World::ends_.late_owner) end
   // here too, once the rows that touch them and their images are done: those of the first
   // slab, which they lie in, and of the last, next to their images (mark_step_ends checks
   // that they lie in the first slab; if not, they wait for every chunk). Threads out of
   // chunks take them in blocks, which fills the wait for the last chunks.
-  const bool owners_here = end && !late_owner_.empty();
+  const bool owners_here = end && !ends_.late_owner.empty();
   std::atomic<std::size_t> next_owner{0};
   constexpr std::size_t kOwnerBlock = 64;
   const auto end_late_owners = [&] {
     double d2 = 0;
     for (long c = 0; c < chunks; ++c)
-      if (c == 0 || c == chunks - 1 || !late_owners_in_first_slab_)
+      if (c == 0 || c == chunks - 1 || !ends_.late_owners_in_first_slab)
         while (!done[c].load(std::memory_order_acquire)) spin_pause();
     for (;;) {
       const std::size_t from = next_owner.fetch_add(kOwnerBlock, std::memory_order_relaxed);
-      if (from >= late_owner_.size()) break;
-      for (std::size_t n = from; n < std::min(from + kOwnerBlock, late_owner_.size()); ++n)
-        d2 = std::max(d2, end_owner_step(late_owner_[n], *end));
+      if (from >= ends_.late_owner.size()) break;
+      for (std::size_t n = from; n < std::min(from + kOwnerBlock, ends_.late_owner.size()); ++n)
+        d2 = std::max(d2, end_owner_step(ends_.late_owner[n], *end));
     }
     return d2;
   };
@@ -166,7 +166,7 @@ template <TangentialModel Model>
 void World::wall_forces(double memory_dt) {
   ScopedPhase phase(timer_, Phase::wall_forces);
   ParticleStore& p = particles_;
-  WallContactList& list = wall_pairs_;
+  WallContactList& list = lists_.walls;
   ContactMemory& mem = list.memory;
   const double t = time_;
   std::vector<Vec3> origin(walls_.size()), wall_velocity(walls_.size());
@@ -180,14 +180,14 @@ void World::wall_forces(double memory_dt) {
   constexpr std::size_t kRows = SubContactStore::kRowsPerBlock;
   const long blocks = static_cast<long>((n + kRows - 1) / kRows);
   const bool composites = has_composites();
-  if (composites) wall_sub_.follow(list);
+  if (composites) shaped_.wall_points.follow(list);
   // Wall contacts crowd into the particles of a few cells (a pile's base, the gate): dynamic
   // chunks keep both threads busy. Each row writes only its own particle and each block of rows
   // its own contact points, so any schedule gives the same result.
 #pragma omp parallel for schedule(dynamic, 4) if (worth_parallel(composites ? 16 * p.owned : p.owned))
   for (long block = 0; block < blocks; ++block) {
     const auto b = static_cast<std::size_t>(block);
-    if (composites) wall_sub_.start_block(b);
+    if (composites) shaped_.wall_points.start_block(b);
     for (std::size_t i = b * kRows; i < std::min(n, (b + 1) * kRows); ++i) {
       const bool fixed = p.inv_mass[i] == 0.0;  // fixed particles do not feel walls
       for (std::uint32_t e = list.row_begin(i); e < list.row_end(i); ++e) {
@@ -198,14 +198,14 @@ void World::wall_forces(double memory_dt) {
         list.force_on_wall[e] = {};
         if (p.shape[i] != 0) {
           if (fixed || !active[w] || gap >= r || (wall.bounded && gap < 0)) {
-            wall_sub_.forget(b, e);
+            shaped_.wall_points.forget(b, e);
             continue;
           }
-          std::vector<SubContact>& points = wall_sub_.next_points(b);
+          std::vector<SubContact>& points = shaped_.wall_points.next_points(b);
           const std::size_t first = points.size();
-          const ContactResult res = composite_wall<Model>(i, wall, origin[w], wall_velocity[w], wall_sub_.take(b, e),
+          const ContactResult res = composite_wall<Model>(i, wall, origin[w], wall_velocity[w], shaped_.wall_points.take(b, e),
                                                           points, memory_dt);
-          wall_sub_.record(e, first, points.size());
+          shaped_.wall_points.record(e, first, points.size());
           p.force[i] += res.force_on_i;
           p.torque[i] += res.torque_i;
           list.force_on_wall[e] = -res.force_on_i;
@@ -230,7 +230,7 @@ void World::wall_forces(double memory_dt) {
         list.force_on_wall[e] = -res.force_on_i;
       }
     }
-    if (composites) wall_sub_.finish_block(b);
+    if (composites) shaped_.wall_points.finish_block(b);
   }
   std::fill(wall_force_.begin(), wall_force_.end(), Vec3{});
   for (std::size_t e = 0; e < list.entries(); ++e) wall_force_[list.wall(e)] += list.force_on_wall[e];

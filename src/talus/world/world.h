@@ -8,24 +8,18 @@
 
 #include "talus/analysis/snapshot.h"
 #include "talus/body/particles.h"
-#include "talus/collide/cell_grid.h"
-#include "talus/collide/pair_list.h"
 #include "talus/contact/contact_law.h"
 #include "talus/contact/contact_table.h"
 #include "talus/integrate/velocity_verlet.h"
-#include "talus/parallel/halo_exchange.h"
-#include "talus/parallel/slab_decomposition.h"
-#include "talus/world/block_schedule.h"
-#include "talus/world/domain.h"
-#include "talus/world/periodic_ghosts.h"
 #include "talus/shape/composite_shape.h"
+#include "talus/world/domain.h"
+#include "talus/world/neighbor_lists.h"
 #include "talus/world/phase_timer.h"
-#include "talus/world/pair_budgets.h"
-#include "talus/world/placed_bodies.h"
-#include "talus/world/sub_contact_store.h"
+#include "talus/world/shaped_contacts.h"
+#include "talus/world/spread_over_ranks.h"
+#include "talus/world/step_end_plan.h"
 #include "talus/world/sub_contacts.h"
 #include "talus/world/wall.h"
-#include "talus/world/wall_contacts.h"
 #include "talus/world/world_state.h"
 
 namespace talus {
@@ -92,9 +86,9 @@ class World {
   int add_shape(const CompositeShape& shape);
   const std::vector<CompositeShape>& shapes() const { return shapes_; }
   // Contact points of non-spherical pairs and wall contacts, per list entry (empty for spheres).
-  const SubContactStore& pair_sub_contacts() const { return pair_sub_; }
-  const SubContactStore& wall_sub_contacts() const { return wall_sub_; }
-  const WallContactList& wall_list() const { return wall_pairs_; }
+  const SubContactStore& pair_sub_contacts() const { return shaped_.pair_points; }
+  const SubContactStore& wall_sub_contacts() const { return shaped_.wall_points; }
+  const WallContactList& wall_list() const { return lists_.walls; }
   ContactTable& contacts() { return table_; }
   const ContactTable& contacts() const { return table_; }
 
@@ -120,8 +114,8 @@ class World {
   /// N, total force of the particles on a wall at the last step (zero before the first)
   Vec3 wall_force(std::size_t wall) const { return wall < wall_force_.size() ? wall_force_[wall] : Vec3{}; }
   std::size_t owned_count() const { return particles_.owned; }
-  std::size_t pair_entries() const { return pairs_.entries(); }
-  const PairList& pair_list() const { return pairs_; }
+  std::size_t pair_entries() const { return lists_.pairs.entries(); }
+  const PairList& pair_list() const { return lists_.pairs; }
   std::uint64_t rebuilds() const { return rebuilds_; }
   std::size_t memory_bytes() const;
   const PhaseTimer& timer() const { return timer_; }
@@ -151,18 +145,19 @@ class World {
   // Owned index of each global id (-1 if absent); valid until the next rebuild.
   std::vector<std::int32_t> index_of_gid() const;
 
-  // Spreads the world over the ranks of `comm` as slabs along the pair list's slab axis
-  // (slab_decomposition.h), each rank keeping the particles of its slab. Every rank must hold
-  // the same whole system when it calls this. One rank along a periodic axis exchanges with
-  // itself (the periodic images along that axis are its halo), which tests the exchange alone.
-  void distribute(const Communicator& comm);
+  // Spreads the world over the ranks of `comm` as slabs along `axis`, or when it is -1 along
+  // the axis one rank's pair list would sort its slabs along (slab_decomposition.h), each rank
+  // keeping the particles of its slab. Every rank must hold the same whole system when it calls
+  // this. One rank along a periodic axis exchanges with itself (the periodic images along that
+  // axis are its halo), which tests the exchange alone.
+  void distribute(const Communicator& comm, int axis = -1);
   // The same with the slabs given (each at least an interaction range wide).
   void distribute(const SlabDecomposition& slabs);
-  bool distributed() const { return slabs_.comm != nullptr; }
-  const SlabDecomposition& slabs() const { return slabs_; }
-  const HaloExchange& halo() const { return halo_; }
+  bool distributed() const { return spread_.slabs.comm != nullptr; }
+  const SlabDecomposition& slabs() const { return spread_.slabs; }
+  const HaloExchange& halo() const { return spread_.halo; }
   const Communicator& communicator() const;  ///< the ranks of a distributed world, else one rank
-  std::uint64_t particles_moved_between_ranks() const { return migrated_; }
+  std::uint64_t particles_moved_between_ranks() const { return spread_.migrated; }
 
   // Builds the lists and computes the forces now if the set-up changed since the last step
   // (particles added or removed, walls changed) instead of at the next step, which then finds
@@ -200,7 +195,7 @@ class World {
   // complete; returns the largest squared drift from the positions at the last build.
   double compute_forces_ending_step(double memory_dt, const StepEnd& end);
   template <TangentialModel Model> double pair_forces(double memory_dt, const StepEnd* end = nullptr);
-  // Folds the ghost forces of owner k (ghosts_.owner_at numbering), ends its step, refreshes
+  // Folds the ghost forces of owner k (lists_.ghosts.owner_at numbering), ends its step, refreshes
   // its ghosts; returns its squared travel since the build.
   double end_owner_step(std::uint32_t k, const StepEnd& end);
   template <TangentialModel Model> void wall_forces(double memory_dt);
@@ -238,51 +233,14 @@ class World {
   std::vector<Vec3> wall_force_;
   ContactTable table_;
   std::vector<CompositeShape> shapes_ = std::vector<CompositeShape>(1);
-  SubContactStore pair_sub_, wall_sub_;
-  PlacedBodies placed_;  ///< parts of the rigid bodies in the world, this step
-  // Contributions to forces and torques per block of rows, binned by the receiving body's range
-  // of indices, applied after the pass range by range (in parallel) and block by block within
-  // a range (composite_pair_forces).
-  struct BodyLoad {
-    std::uint32_t body;
-    Vec3 force, torque;
-  };
-  static constexpr int kLoadRanges = 8;
-  using BlockLoads = std::array<std::vector<BodyLoad>, kLoadRanges>;
-  std::vector<BlockLoads> block_loads_;
-  BlockSchedule block_schedule_;
-  // Per list entry and per part pair: found apart, and so while the two bodies' travels
-  // (PlacedBodies::travel) add up to less than the budget. Cleared at every rebuild.
-  PairBudgets budgets_;
-  CellGrid grid_;
-  PairList pairs_;
-  CarriedContacts carried_;         ///< rebuild scratch: the memories the new list takes over
-  std::vector<CellCoord> cell_of_;  ///< rebuild scratch: the cell of each particle and ghost
-  WallContactList wall_pairs_;
-  PeriodicGhosts ghosts_;
-  SlabDecomposition slabs_;  ///< comm == nullptr: not distributed
-  HaloExchange halo_;
-  std::uint64_t migrated_ = 0;
-  std::vector<Vec3> position_at_build_;
-  bool ghosts_fresh_ = false;  ///< ghosts were refreshed as their owners ended the step
-  std::vector<StepEndKind> step_end_;  ///< per owned particle (mark_step_ends)
-  std::vector<std::uint32_t> late_;    ///< the owned particles whose step ends late
-  // Without walls, owners of ghosts (numbered as by ghosts_.owner_at) whose ghosts all lie in
-  // their own slab end their step with that slab, in the pair pass: inline_owner_ from
-  // inline_owner_start_[s] for slab s. The others (late_owner_) end theirs later in the same
-  // parallel region. With walls both lists are empty (World::mark_step_ends).
-  std::vector<std::uint32_t> inline_owner_, inline_owner_start_, late_owner_;
-  bool late_owners_in_first_slab_ = true;  ///< all of late_owner_ (World::pair_forces relies on it)
-  std::vector<std::uint32_t> gid_at_build_;
-  std::vector<Vec3> wall_origin_at_build_;
-  std::vector<char> wall_active_at_build_;
-  double time_at_build_ = 0;  ///< s, the time the lists were built at (wall positions)
-  double skin_ = 0;
+  NeighborLists lists_;     ///< cells, pair and wall lists with their memories, periodic images
+  ShapedContacts shaped_;   ///< contact points and scratch of rigid bodies of several parts
+  SpreadOverRanks spread_;  ///< this rank's slab and halo (slabs.comm == nullptr: not distributed)
+  StepEndPlan ends_;        ///< how each particle's step ends in the force pass (sphere worlds)
   double time_ = 0;
   std::uint64_t steps_ = 0;
   std::uint64_t rebuilds_ = 0;
   std::uint32_t next_gid_ = 0;
-  double max_displacement_ = 0;  ///< m, since the last rebuild
   bool ready_ = false;
   PhaseTimer timer_;
 };
@@ -301,7 +259,7 @@ std::size_t World::remove_particles_if(Pred remove) {
   particles_.owned = kept;
   particles_.resize(kept);
   // The lists stay as built: rebuild() carries their memories by the global ids of that build
-  // (gid_at_build_), and the entries of removed particles find no place in the new lists.
+  // (lists_.gid_at_build), and the entries of removed particles find no place in the new lists.
   invalidate();
   return removed.size();
 }

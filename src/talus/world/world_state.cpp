@@ -137,31 +137,31 @@ WorldState World::capture_state() {
   s.tangential_model = settings_.tangential_model;
   s.walls = walls_;
   s.wall_force = wall_force_;
-  s.position_at_build = position_at_build_;
-  s.time_at_build = time_at_build_;
-  s.skin = skin_;
+  s.position_at_build = lists_.position_at_build;
+  s.time_at_build = lists_.time_at_build;
+  s.skin = lists_.skin;
 
   const std::vector<std::uint32_t>& gid = particles_.gid;
-  for (std::size_t i = 0; i < pairs_.rows(); ++i)
-    for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e) {
+  for (std::size_t i = 0; i < lists_.pairs.rows(); ++i)
+    for (std::uint32_t e = lists_.pairs.row_begin(i); e < lists_.pairs.row_end(i); ++e) {
       s.pair_gid_i.push_back(gid[i]);
-      s.pair_gid_j.push_back(gid[pairs_.neighbor(e)]);
+      s.pair_gid_j.push_back(gid[lists_.pairs.neighbor(e)]);
     }
-  s.pair_memory = pairs_.memory;
-  s.pair_sub = pair_sub_.lists();
-  for (std::size_t i = 0; i < wall_pairs_.rows(); ++i)
-    for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e) {
+  s.pair_memory = lists_.pairs.memory;
+  s.pair_sub = shaped_.pair_points.lists();
+  for (std::size_t i = 0; i < lists_.walls.rows(); ++i)
+    for (std::uint32_t e = lists_.walls.row_begin(i); e < lists_.walls.row_end(i); ++e) {
       s.wall_gid.push_back(gid[i]);
-      s.wall_index.push_back(wall_pairs_.wall(e));
+      s.wall_index.push_back(lists_.walls.wall(e));
     }
-  s.wall_memory = wall_pairs_.memory;
-  s.wall_entry_force = wall_pairs_.force_on_wall;
-  s.wall_sub = wall_sub_.lists();
+  s.wall_memory = lists_.walls.memory;
+  s.wall_entry_force = lists_.walls.force_on_wall;
+  s.wall_sub = shaped_.wall_points.lists();
   if (distributed()) {
-    s.layout.axis = slabs_.axis;
-    s.layout.rebalance = slabs_.rebalance;
-    s.layout.min_width = slabs_.min_width;
-    s.layout.cut = slabs_.cut;
+    s.layout.axis = spread_.slabs.axis;
+    s.layout.rebalance = spread_.slabs.rebalance;
+    s.layout.min_width = spread_.slabs.min_width;
+    s.layout.cut = spread_.slabs.cut;
     join_pieces(s, communicator());
   }
   return s;
@@ -220,10 +220,10 @@ void World::restore_state(const WorldState& s, const Communicator* ranks) {
   require(!distributed(), "a distributed world is restored before it is spread over the ranks");
   if (ranks && s.fits_ranks(static_cast<std::uint64_t>(ranks->size()))) {
     const WorldState::RankLayout& l = s.layout;
-    slabs_ = SlabDecomposition::with_cuts(*ranks, settings_.domain, l.axis, l.cut, l.min_width);
-    slabs_.rebalance = false;  // the replayed build keeps the cuts it made
+    spread_.slabs = SlabDecomposition::with_cuts(*ranks, settings_.domain, l.axis, l.cut, l.min_width);
+    spread_.slabs.rebalance = false;  // the replayed build keeps the cuts it made
     replay_last_build(share_of_rank(s, ranks->rank()));
-    slabs_.rebalance = l.rebalance;
+    spread_.slabs.rebalance = l.rebalance;
     return;
   }
   if (s.ranks > 1) {
@@ -245,40 +245,40 @@ void World::replay_last_build(const WorldState& s) {
           "particles are not in the order of their last neighbour-list build");
 
   std::copy(s.particles.position.begin(), s.particles.position.end(), particles_.position.begin());
-  ghosts_.update_positions(particles_);
-  ghosts_.update_velocities(particles_);
-  if (distributed()) halo_.forward(particles_);
+  lists_.ghosts.update_positions(particles_);
+  lists_.ghosts.update_velocities(particles_);
+  if (distributed()) spread_.halo.forward(particles_);
   time_ = s.time;
   rebuilds_ = s.rebuilds;
   wall_force_ = s.wall_force;
 
   const std::vector<std::uint32_t>& gid = particles_.gid;
-  require(pairs_.entries() == s.pair_gid_i.size() && s.pair_gid_j.size() == s.pair_gid_i.size(),
-          "the rebuilt neighbour list has " + std::to_string(pairs_.entries()) + " entries, the stored one " +
+  require(lists_.pairs.entries() == s.pair_gid_i.size() && s.pair_gid_j.size() == s.pair_gid_i.size(),
+          "the rebuilt neighbour list has " + std::to_string(lists_.pairs.entries()) + " entries, the stored one " +
               std::to_string(s.pair_gid_i.size()));
-  for (std::size_t i = 0; i < pairs_.rows(); ++i)
-    for (std::uint32_t e = pairs_.row_begin(i); e < pairs_.row_end(i); ++e)
-      require(gid[i] == s.pair_gid_i[e] && gid[pairs_.neighbor(e)] == s.pair_gid_j[e],
+  for (std::size_t i = 0; i < lists_.pairs.rows(); ++i)
+    for (std::uint32_t e = lists_.pairs.row_begin(i); e < lists_.pairs.row_end(i); ++e)
+      require(gid[i] == s.pair_gid_i[e] && gid[lists_.pairs.neighbor(e)] == s.pair_gid_j[e],
               "the rebuilt neighbour list differs from the stored one at entry " + std::to_string(e));
-  check_memory_size(s.pair_memory, pairs_.memory, "particle");
-  pairs_.memory = s.pair_memory;
-  pairs_.remark_memories();
-  require(s.pair_sub.size() == pair_sub_.entries(), "contact points of rigid bodies do not match the neighbour list");
-  if (has_composites()) pair_sub_.assign(pairs_, s.pair_sub);
+  check_memory_size(s.pair_memory, lists_.pairs.memory, "particle");
+  lists_.pairs.memory = s.pair_memory;
+  lists_.pairs.remark_memories();
+  require(s.pair_sub.size() == shaped_.pair_points.entries(), "contact points of rigid bodies do not match the neighbour list");
+  if (has_composites()) shaped_.pair_points.assign(lists_.pairs, s.pair_sub);
 
-  require(wall_pairs_.entries() == s.wall_gid.size() && s.wall_index.size() == s.wall_gid.size() &&
+  require(lists_.walls.entries() == s.wall_gid.size() && s.wall_index.size() == s.wall_gid.size() &&
               s.wall_entry_force.size() == s.wall_gid.size(),
-          "the rebuilt wall-contact list has " + std::to_string(wall_pairs_.entries()) + " entries, the stored one " +
+          "the rebuilt wall-contact list has " + std::to_string(lists_.walls.entries()) + " entries, the stored one " +
               std::to_string(s.wall_gid.size()));
-  for (std::size_t i = 0; i < wall_pairs_.rows(); ++i)
-    for (std::uint32_t e = wall_pairs_.row_begin(i); e < wall_pairs_.row_end(i); ++e)
-      require(gid[i] == s.wall_gid[e] && wall_pairs_.wall(e) == s.wall_index[e],
+  for (std::size_t i = 0; i < lists_.walls.rows(); ++i)
+    for (std::uint32_t e = lists_.walls.row_begin(i); e < lists_.walls.row_end(i); ++e)
+      require(gid[i] == s.wall_gid[e] && lists_.walls.wall(e) == s.wall_index[e],
               "the rebuilt wall-contact list differs from the stored one at entry " + std::to_string(e));
-  check_memory_size(s.wall_memory, wall_pairs_.memory, "wall");
-  wall_pairs_.memory = s.wall_memory;
-  wall_pairs_.force_on_wall = s.wall_entry_force;
-  require(s.wall_sub.size() == wall_sub_.entries(), "wall contact points of rigid bodies do not match the wall list");
-  if (has_composites()) wall_sub_.assign(wall_pairs_, s.wall_sub);
+  check_memory_size(s.wall_memory, lists_.walls.memory, "wall");
+  lists_.walls.memory = s.wall_memory;
+  lists_.walls.force_on_wall = s.wall_entry_force;
+  require(s.wall_sub.size() == shaped_.wall_points.entries(), "wall contact points of rigid bodies do not match the wall list");
+  if (has_composites()) shaped_.wall_points.assign(lists_.walls, s.wall_sub);
   ready_ = true;
 }
 
@@ -289,12 +289,12 @@ void World::take_state_without_lists(const WorldState& s) {
   settings_.gravity = s.gravity;
   settings_.tangential_model = s.tangential_model;
   walls_ = s.walls;
-  skin_ = s.skin;
-  pairs_ = PairList{};
-  wall_pairs_ = WallContactList{};
-  pair_sub_.clear();
-  wall_sub_.clear();
-  gid_at_build_.clear();
+  lists_.skin = s.skin;
+  lists_.pairs = PairList{};
+  lists_.walls = WallContactList{};
+  shaped_.pair_points.clear();
+  shaped_.wall_points.clear();
+  lists_.gid_at_build.clear();
 }
 
 void World::restore_by_global_ids(const WorldState& s) {
@@ -326,16 +326,16 @@ void World::restore_by_global_ids(const WorldState& s) {
   CarriedContacts carried;
   group_records(records, next_gid_, layout, carried, shaped ? &pair_points : nullptr);
   std::vector<std::int64_t> origin;
-  pairs_.restore_memory(carried, particles_.gid, shaped ? &origin : nullptr);
-  if (shaped) pair_sub_ = SubContactStore::from_lists(pairs_, origin, carried.points);
+  lists_.pairs.restore_memory(carried, particles_.gid, shaped ? &origin : nullptr);
+  if (shaped) shaped_.pair_points = SubContactStore::from_lists(lists_.pairs, origin, carried.points);
 
   std::vector<WallMemoryRecord> walls;
   require(s.wall_index.size() == s.wall_gid.size(), "wall contacts damaged");
   for (std::size_t e = 0; e < s.wall_gid.size(); ++e)
     walls.push_back({s.wall_gid[e], s.wall_index[e], at(s.wall_memory.spring, e), at(s.wall_memory.normal_prev, e),
                      at(s.wall_memory.rolling, e)});
-  wall_pairs_.restore_memory(walls, particles_.gid, next_gid_, shaped ? &origin : nullptr);
-  if (shaped) wall_sub_ = SubContactStore::from_lists(wall_pairs_, origin, s.wall_sub);
+  lists_.walls.restore_memory(walls, particles_.gid, next_gid_, shaped ? &origin : nullptr);
+  if (shaped) shaped_.wall_points = SubContactStore::from_lists(lists_.walls, origin, s.wall_sub);
   ready_ = true;
 }
 
