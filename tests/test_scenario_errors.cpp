@@ -93,6 +93,17 @@ TEST(ScenarioErrors, NegativeStiffness) {
   EXPECT_EQ(e.rfind("case.toml:14: contact.normal_stiffness: must be positive", 0), 0u) << e;
 }
 
+// run.processors: sub-domains are slabs, so ranks go along one axis, whole numbers of them.
+TEST(ScenarioErrors, ProcessorsAlongOneAxisInWholeNumbers) {
+  EXPECT_EQ(load_error(kValid, {"run.processors=[1, 1, 4]"}), "");
+  const std::string two_axes = load_error(kValid, {"run.processors=[2, 2, 1]"});
+  EXPECT_NE(two_axes.find("run.processors: sub-domains are slabs along one axis"), std::string::npos) << two_axes;
+  const std::string half = load_error(kValid, {"run.processors=[1.5, 1, 1]"});
+  EXPECT_NE(half.find("run.processors: counts of ranks must be whole numbers"), std::string::npos) << half;
+  const std::string zero = load_error(kValid, {"run.processors=[0, 1, 1]"});
+  EXPECT_NE(zero.find("run.processors"), std::string::npos) << zero;
+}
+
 TEST(ScenarioErrors, WrongType) {
   const std::string e = load_error(replace(kValid, "density = 2500", "density = \"heavy\""));
   EXPECT_EQ(e.rfind("case.toml:10: species.glass.density:", 0), 0u) << e;

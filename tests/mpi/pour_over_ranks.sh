@@ -13,6 +13,13 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work"
 "$talus" run "$scenario" --out one --threads 1 --quiet --set run.vtk_interval=0.1
 $mpirun -n 2 "$talus" run "$scenario" --out two --threads 1 --quiet --set run.vtk_interval=0.1 --set run.snapshot_interval=0.1
 $mpirun -n 4 "$talus" run "$scenario" --out four --threads 1 --quiet
+# Slabs along z, as run.processors asks, instead of the axis chosen for them (x); and a count of
+# sub-domains that is not the number of ranks, refused with the key named.
+$mpirun -n 2 "$talus" run "$scenario" --out two_z --threads 1 --quiet --set run.end_time=0.12 --set 'run.processors=[1, 1, 2]'
+if $mpirun -n 2 "$talus" run "$scenario" --out two_bad --threads 1 --quiet --set 'run.processors=[1, 1, 4]' 2> bad.err; then
+  echo "FAILED: 4 sub-domains on 2 ranks were not refused"; exit 1
+fi
+grep -q 'run.processors: 4 sub-domains for 2 ranks' bad.err || { echo "FAILED: the refusal does not name the key:"; cat bad.err; exit 1; }
 "$talus" run "$scenario" --set run.end_time=0.35 --restart two/checkpoints/latest.h5 --out again --threads 1 --quiet
 /usr/bin/python3 - <<'PY'
 import csv, glob, json, os, sys
@@ -20,20 +27,21 @@ fail = []
 def check(ok, what):
     if not ok:
         fail.append(what)
-rows = {d: list(csv.DictReader(open(d + "/timeseries.csv"))) for d in ["one", "two", "four"]}
-summary = {d: json.load(open(d + "/summary.json")) for d in ["one", "two", "four", "again"]}
+rows = {d: list(csv.DictReader(open(d + "/timeseries.csv"))) for d in ["one", "two", "four", "two_z"]}
+summary = {d: json.load(open(d + "/summary.json")) for d in ["one", "two", "four", "again", "two_z"]}
+check(summary["two"]["slab_axis"] == "x" and summary["two_z"]["slab_axis"] == "z", "slab axes: chosen x, asked z")
 for d in ["one", "two", "four"]:
     s = summary[d]
     check(s["particles"] + s["particles_left_domain"] == 240, f"{d}: poured {s['particles'] + s['particles_left_domain']} of 240")
     check(s["particles_left_domain"] > 0, f"{d}: no sphere left the box")
-for d in ["two", "four"]:
+for d in ["two", "four", "two_z"]:
     check(summary[d]["particles_moved_between_ranks"] > 0, f"{d}: no sphere crossed a cut")
 # Up to t = 0.12 (six batches poured, 14 spheres removed): round-off (measured 1e-15).
-for a, b, c in zip(rows["one"], rows["two"], rows["four"]):
+for a, b, c, z in zip(rows["one"], rows["two"], rows["four"], rows["two_z"]):
     if float(a["time"]) > 0.125:
         break
     k = float(a["kinetic_translational"])
-    for other, name in [(b, "two"), (c, "four")]:
+    for other, name in [(b, "two"), (c, "four"), (z, "two_z")]:
         check(abs(float(other["kinetic_translational"]) - k) <= 1e-9 * k, f"{name}: kinetic energy at t = {a['time']}")
         check(other["particles_left_domain"] == a["particles_left_domain"], f"{name}: removals at t = {a['time']}")
 check(float(rows["one"][12]["particles_left_domain"]) > 0, "no removal before t = 0.12")

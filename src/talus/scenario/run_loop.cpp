@@ -202,7 +202,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
     loop.next_output = world.time() + run.output_interval;
     loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
-  if (spread && !world.distributed()) world.distribute(comm);  // a restart on the same ranks is spread already
+  if (spread && !world.distributed()) world.distribute(comm, run.slab_axis);  // a restart on the same ranks is spread already
   const std::uint64_t first_step = world.step_count();
   const double dt = world.settings().time_step;
   // Steps run in batches (World::run closes one step and opens the next in one pass over
@@ -292,7 +292,10 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   summary["steps_per_second"] = outcome.wall_seconds > 0 ? steps_run / outcome.wall_seconds : 0.0;
   summary["threads"] = omp_get_max_threads();
   summary["neighbour_rebuilds"] = world.rebuilds();
-  if (spread) summary["particles_moved_between_ranks"] = comm.sum(static_cast<double>(world.particles_moved_between_ranks()));
+  if (spread) {
+    summary["particles_moved_between_ranks"] = comm.sum(static_cast<double>(world.particles_moved_between_ranks()));
+    summary["slab_axis"] = std::string(1, "xyz"[world.slabs().axis]);
+  }
   // Where the wall time of rank 0 went, by phase of the step (s); the rest is output,
   // analyses and the run loop.
   nlohmann::json phases = nlohmann::json::object();

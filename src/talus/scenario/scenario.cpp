@@ -8,6 +8,7 @@
 #include "talus/contact/parameter_procedure.h"
 #include "talus/io/number_format.h"
 #include "talus/math/random_orientation.h"
+#include "talus/parallel/communicator.h"
 #include "talus/scenario/chute.h"
 #include "talus/scenario/chute_study.h"
 #include "talus/scenario/contact_reader.h"
@@ -203,6 +204,27 @@ void read_walls(const ScenarioFile& f, World& world, std::vector<std::string>& m
   }
 }
 
+// run.processors = [px, py, pz]: the ranks of a run under mpirun along each axis. Sub-domains
+// are slabs, so all but one count must be 1; that axis is returned. The product must be the
+// number of ranks (checked under mpirun only: on one rank the key has nothing to split).
+int read_processors(const ScenarioFile& f, int ranks) {
+  const Vec3 p = f.get<Vec3>("run.processors", io::positive);
+  int axis = -1, product = 1;
+  for (int a = 0; a < 3; ++a) {
+    if (p[a] != std::floor(p[a])) f.fail("run.processors", "counts of ranks must be whole numbers");
+    if (p[a] > 1) {
+      if (axis >= 0)
+        f.fail("run.processors", "sub-domains are slabs along one axis: give ranks along one axis only, e.g. [1, 1, " +
+                                     std::to_string(ranks) + "]");
+      axis = a;
+    }
+    product *= static_cast<int>(p[a]);
+  }
+  if (ranks > 1 && product != ranks)
+    f.fail("run.processors", std::to_string(product) + " sub-domains for " + std::to_string(ranks) + " ranks (mpirun -n)");
+  return axis;
+}
+
 }  // namespace
 
 Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
@@ -219,6 +241,7 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
   run.checkpoint_interval = f.get_or<double>("run.checkpoint_interval", 0.0, io::non_negative);
   run.checkpoint_keep = static_cast<std::size_t>(f.get_or<std::int64_t>("run.checkpoint_keep", 3, io::positive));
   const double steps_per_contact = f.get_or<double>("run.steps_per_contact", 50, io::in_range(10, 1e9));
+  if (f.has("run.processors")) run.slab_axis = read_processors(f, Communicator::world().size());
 
   WorldSettings ws;
   ws.tangential_model = read_tangential_model(f);

@@ -27,6 +27,9 @@ struct RunControl {
   std::size_t checkpoint_keep = 3;           ///< checkpoints kept in DIR/checkpoints/
   std::uint64_t seed = 1;
   LeavePolicy on_leave = LeavePolicy::error; ///< domain.on_leave: particles leaving a non-periodic face
+  // Under mpirun, the axis the slabs of the run's ranks are cut along (run.processors names the
+  // ranks per axis); -1: the most even one.
+  int slab_axis = -1;
 };
 
 struct Scenario {
