@@ -7,7 +7,8 @@
       and the small CSVs, no VTK, no checkpoints) into validation/<paper>/<family>/.
   validation.py report
       validation/REPORT.md, its figures and the machine-readable results
-      (validation/huet2021/runout.json) from the committed compact results alone.
+      (validation/weinhart2012/table1.json, validation/huet2021/runout.json) from the committed
+      compact results alone.
 
 The runs themselves go to validation/runs/ (not committed) unless --runs says otherwise.
 """
@@ -44,12 +45,38 @@ SPHERE_BOX = ["dam_break.count=3200", "dam_break.box_length=0.6", "dam_break.box
               "dam_break.domain_height=0.6", "dam_break.fill_growth=1e-6"]
 FAMILIES = [
     Family("huet2021", "crosses", "examples/dam_break_crosses.toml", "dam_break.gate_position",
-           ["0.03", "0.04", "0.05", "0.065", "0.085"], 3, NO_FRAMES, "crosses"),
+           ["0.035", "0.04", "0.05", "0.065", "0.085"], 3, NO_FRAMES, "crosses"),
     Family("huet2021", "spheres", "examples/dam_break_spheres.toml", "dam_break.gate_position",
            ["0.03", "0.04", "0.05", "0.07", "0.1"], 3, NO_FRAMES + SPHERE_BOX, "spheres"),
     Family("huet2021", "crosses_memoryless", "examples/dam_break_crosses.toml", "dam_break.gate_position",
            ["0.04"], 3, NO_FRAMES + ["contact.tangential=memoryless"], "crosses"),
 ]
+
+
+class ChuteStudy:
+    """A chute study of Weinhart et al. 2012 run by `talus hstop` or `talus flowmap` (which reuse
+    finished cases and resume cut-off ones from their checkpoints)."""
+
+    def __init__(self, name, command, options, tables):
+        self.paper, self.name, self.command, self.options, self.tables = "weinhart2012", name, command, options, tables
+
+    def folder(self, base):
+        return base / self.paper / self.name
+
+
+# Weinhart et al. 2012, lambda = 1: the h_stop staircase (Sect. 6) and steady flows over a map of
+# H and theta wide enough for the flow rule and the closures (Sects. 7, 9), run to t = 2000 and
+# averaged over the last 100 time units, as the paper.
+CHUTE_STUDIES = [
+    ChuteStudy("hstop", "hstop", ["--lambda", "1"], ["hstop_runs.csv", "hstop_intervals.csv"]),
+    ChuteStudy("flowmap", "flowmap", ["--lambda", "1", "--heights", "10,20,30,40", "--angles", "22,24,26,28",
+                                      "--end-time", "2000", "--average", "100"], ["sweep_runs.csv"]),
+]
+CHUTE_CASE_FILES = ["summary.json", "chute_profile.csv", "chute_series.csv"]
+# Weinhart et al. 2012, Table 1, lambda = 1, and the agreement issue 26 asks for.
+TABLE1 = {"delta1": 17.708, "delta2": 32.780, "A": 3.355, "beta": 0.196, "gamma": 0.040}
+TABLE1_BAR = {"delta1": ("deg", 0.5), "delta2": ("deg", 0.5), "A": ("relative", 0.10), "beta": ("relative", 0.10),
+              "gamma": None}
 
 
 def finished(run: Path) -> bool:
@@ -69,9 +96,35 @@ def run_folders(family_dir: Path):
     return out
 
 
+def run_chute_study(study, args, runs):
+    out = study.folder(runs)
+    cmd = [args.talus, study.command, str(ROOT / "examples" / "chute.toml"), *study.options, "--jobs", str(args.jobs),
+           "--out", str(out)]
+    print(" ".join(cmd), flush=True)
+    subprocess.run(cmd, check=False)
+    dest = study.folder(VALIDATION)
+    dest.mkdir(parents=True, exist_ok=True)
+    for table in study.tables:
+        if (out / table).exists():
+            shutil.copyfile(out / table, dest / table)
+    kept = 0
+    for case in sorted(out.glob("lambda*_H*_theta*")):
+        if not finished(case):
+            continue
+        (dest / case.name).mkdir(exist_ok=True)
+        for name in CHUTE_CASE_FILES:
+            if (case / name).exists():
+                shutil.copyfile(case / name, dest / case.name / name)
+        kept += 1
+    print(f"weinhart2012/{study.name}: {kept} finished cases kept under {dest}")
+
+
 def run(args):
     runs = Path(args.runs).resolve()
     only = set(args.only.split(",")) if args.only else None
+    for study in CHUTE_STUDIES:
+        if not only or study.name in only:
+            run_chute_study(study, args, runs)
     for fam in FAMILIES:
         if only and fam.name not in only:
             continue
@@ -145,13 +198,13 @@ TABLE3_REGIONS = ["whole", "near_gate", "near_gate_top"]  # whole space, half cl
 TABLE3_ROWS = ["coordination_points", "ground_contacts", "side_wall_contacts", "gate_contacts"]
 
 
-def huet_cases():
-    """One record per family and point, from the committed summaries."""
+def huet_cases(base=VALIDATION):
+    """One record per family and point, from the committed summaries under `base`."""
     cases = []
     for fam in FAMILIES:
         if fam.paper != "huet2021":
             continue
-        for point in sorted(fam.folder(VALIDATION).glob("*=*")):
+        for point in sorted(fam.folder(base).glob("*=*")):
             runs = [json.loads(f.read_text()) for f in sorted(point.glob("seed_*/summary.json"))]
             if not runs:
                 continue
@@ -190,9 +243,9 @@ def fmt(m, e, digits=3):
     return f"{m:.{digits}g} ± {e:.2g}" if e is not None and math.isfinite(e) else f"{m:.{digits}g}"
 
 
-def huet_report(lines, figures):
-    cases = huet_cases()
-    out = VALIDATION / "huet2021"
+def huet_report(lines, figures, base=VALIDATION):
+    cases = huet_cases(base)
+    out = base / "huet2021"
     out.mkdir(parents=True, exist_ok=True)
     runout = [{"particles": c["particles"], "family": c["family"], "aspect_ratio": finite(c["aspect_ratio"]),
                "aspect_ratio_err": finite(c["aspect_ratio_err"]), "runout_ratio": finite(c["runout_ratio"]),
@@ -235,7 +288,7 @@ def huet_report(lines, figures):
     lines.append("")
     if cases:
         figures.append(plot_huet(cases, out))
-        lines += [f"![runout and height ratios against a]({figures[-1].relative_to(VALIDATION)})", ""]
+        lines += [f"![runout and height ratios against a]({figures[-1].relative_to(base)})", ""]
 
 
 def plot_huet(cases, out):
@@ -265,11 +318,56 @@ def plot_huet(cases, out):
     return path
 
 
+def weinhart_report(lines, base=VALIDATION):
+    """Table 1 (lambda = 1) from the committed staircase and flow map: the fits of
+    tools/chute_fits.py on the cases' tables, beside the paper's values."""
+    sys.path.insert(0, str(ROOT / "tools"))
+    import chute_fits
+    out = base / "weinhart2012"
+    intervals = chute_fits._read(str(out / "hstop" / "hstop_intervals.csv")) if (out / "hstop" / "hstop_intervals.csv").exists() else []
+    runs = []
+    for study in CHUTE_STUDIES:
+        for table in study.tables:
+            if table.endswith("_runs.csv") and (study.folder(base) / table).exists():
+                runs += chute_fits._read(str(study.folder(base) / table))
+    lines += ["## Weinhart et al. 2012: h_stop and the flow rule, lambda = 1", ""]
+    if not intervals and not runs:
+        lines += ["No chute cases have run yet (`scripts/validate.sh run --only hstop,flowmap`).", ""]
+        return
+    fits = chute_fits.fit_all(intervals, runs, 1.0)
+    hs, fr = fits.get("hstop35"), fits.get("flow_rule")
+    table = {"lambda": 1}
+    for name, block in (("delta1", hs), ("delta2", hs), ("A", hs), ("beta", fr), ("gamma", fr)):
+        table[name] = float(block["params"][name]) if block else None
+        table[name + "_err"] = float(block["se"][name]) if block else None
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "table1.json").write_text(json.dumps(table, indent=1) + "\n")
+    lines += [f"{len(runs)} cases, {len(intervals)} arrest intervals of the staircase. Fits as Eqs. 35 and 47 "
+              "(tools/chute_fits.py), standard errors from the least-squares covariance; those of beta and gamma "
+              "are given the fitted h_stop curve and leave out its uncertainty.", "",
+              "| quantity | Talus | Weinhart et al. 2012, Table 1 | difference | within the bar |", "|---|---|---|---|---|"]
+    for name, paper in TABLE1.items():
+        v, e = table[name], table[name + "_err"]
+        if v is None:
+            lines.append(f"| {name} | not yet fitted | {paper} | | |")
+            continue
+        bar = TABLE1_BAR[name]
+        if bar is None:
+            verdict = "(no bar)"
+        elif bar[0] == "deg":
+            verdict = "yes" if abs(v - paper) <= bar[1] else "no"
+        else:
+            verdict = "yes" if abs(v - paper) <= bar[1] * paper else "no"
+        lines.append(f"| {name} | {v:.4g} ± {e:.2g} | {paper} | {v - paper:+.3g} | {verdict} |")
+    lines.append("")
+
+
 def report(_args):
     lines = ["# Validation report", "",
              "Regenerated by `scripts/validate.sh` from the compact results under `validation/`; "
              "`scripts/validate.sh run` runs the cases still missing.", ""]
     figures = []
+    weinhart_report(lines)
     huet_report(lines, figures)
     (VALIDATION / "REPORT.md").write_text("\n".join(lines) + "\n")
     print(VALIDATION / "REPORT.md")
@@ -282,7 +380,8 @@ def main():
     r.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     r.add_argument("--talus", default=str(ROOT / "build" / "talus"))
     r.add_argument("--runs", default=str(VALIDATION / "runs"))
-    r.add_argument("--only", help="families, comma-separated (" + ",".join(f.name for f in FAMILIES) + ")")
+    r.add_argument("--only", help="studies, comma-separated (" + ",".join([c.name for c in CHUTE_STUDIES] +
+                                                                         [f.name for f in FAMILIES]) + ")")
     sub.add_parser("report")
     args = p.parse_args()
     (run if args.command == "run" else report)(args)
