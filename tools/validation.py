@@ -289,6 +289,84 @@ def huet_report(lines, figures, base=VALIDATION):
     if cases:
         figures.append(plot_huet(cases, out))
         lines += [f"![runout and height ratios against a]({figures[-1].relative_to(base)})", ""]
+    huet_micro(lines, figures, base)
+
+
+def read_table(path):
+    """A CSV of numbers as {column: [values]}."""
+    import csv
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return {k: [float(r[k]) for r in rows] for k in (rows[0] if rows else {})}
+
+
+def huet_micro(lines, figures, base=VALIDATION):
+    """Huet et al. 2021, Figs. 12, 15 and 17 from every kept run of the spheres and the crosses:
+    the mean speed against t/tau_c, the PDF of F_c/<F_c> before the gate opens (its tail: the
+    largest ratio, 14 for spheres and 32 for crosses in the paper) and the branch-vector fabric."""
+    runs = {}
+    for fam in ("spheres", "crosses"):
+        folder = base / "huet2021" / fam
+        runs[fam] = sorted(d for d in folder.glob("*=*/seed_*") if (d / "summary.json").exists())
+    if not any(runs.values()):
+        return
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4))
+    polar = fig.add_subplot(1, 3, 3, projection="polar")
+    axes[2].remove()
+    lines += ["Microstructure before the gate opens and collapse speeds, over every kept run (Figs. 12, 15, 17):", "",
+              "| particles | runs | largest F_c/<F_c> (log bins, mean of runs) | fabric anisotropy (xz) | preferred direction (deg from x) |",
+              "|---|---|---|---|---|"]
+    colours = {"spheres": "tab:blue", "crosses": "k"}
+    for fam, folders in runs.items():
+        if not folders:
+            continue
+        pdfs = [read_table(d / "force_pdf.csv") for d in folders if (d / "force_pdf.csv").exists()]
+        largest = []
+        for t in pdfs:
+            # The logarithmic bins reach F_c/<F_c> = 20 (the linear ones stop at 6): the centre of
+            # the last one holding a contact.
+            tail = [x for sc, x, y in zip(t["scale"], t["force_ratio"], t["density"]) if sc == 1 and y > 0]
+            if tail:
+                largest.append(max(tail))
+        if pdfs:
+            logs = [[(x, y) for sc, x, y in zip(t["scale"], t["force_ratio"], t["density"]) if sc == 1] for t in pdfs]
+            xs = [x for x, _ in logs[0]]
+            same = all(len(l) == len(xs) for l in logs)
+            if same:
+                mean = np.mean([[y for _, y in l] for l in logs], axis=0)
+                axes[1].plot(xs, np.where(mean > 0, mean, np.nan), "-", color=colours[fam], label=f"{fam} ({len(pdfs)} runs)")
+        fabrics = [json.loads((d / "summary.json").read_text())["dam_break"]["before_gate"].get("fabric_xz", {}) for d in folders]
+        aniso = [f["anisotropy"] for f in fabrics if "anisotropy" in f]
+        direction = [math.degrees(f["direction"]) for f in fabrics if "direction" in f]
+        tabs = [read_table(d / "fabric.csv") for d in folders if (d / "fabric.csv").exists()]
+        if tabs:
+            theta = np.array(tabs[0]["theta"])
+            mean = np.mean([t["density"] for t in tabs], axis=0)
+            polar.plot(np.concatenate([theta, theta + np.pi, theta[:1]]), np.concatenate([mean, mean, mean[:1]]),
+                       "-", color=colours[fam], label=fam)
+        for d in folders:
+            if (d / "collapse_speeds.csv").exists():
+                t = read_table(d / "collapse_speeds.csv")
+                axes[0].plot(t["time_over_tau"], t["speed_over_sqrt_gH0"], "-", color=colours[fam], lw=0.6, alpha=0.6)
+        m_l, e_l = mean_err(largest)
+        m_a, e_a = mean_err(aniso)
+        m_d, e_d = mean_err(direction)
+        lines.append(f"| {fam} | {len(folders)} | {fmt(m_l, e_l)} | {fmt(m_a, e_a)} | {fmt(m_d, e_d)} |")
+    axes[0].set(xlabel="t / tau_c", ylabel="mean speed / sqrt(g H0)", title="Fig. 12: every run", xlim=(0, 12))
+    axes[1].set(xscale="log", yscale="log", xlabel="F_c / <F_c>", ylabel="PDF", title="Fig. 15(b): before the gate opens")
+    axes[1].legend(fontsize=8)
+    polar.set_title("Fig. 17: branch vectors, xz plane", fontsize=9)
+    polar.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    path = base / "huet2021" / "fig12_15_17_speed_forces_fabric.png"
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    figures.append(path)
+    lines += ["", f"![speeds, force PDF and fabric]({path.relative_to(base)})", ""]
 
 
 def plot_huet(cases, out):
