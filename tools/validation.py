@@ -5,6 +5,8 @@
       runs the cases still missing (each family a `talus sweep`, finished runs reused, an
       interrupted one run again), then copies every finished run's compact results (summary.json
       and the small CSVs, no VTK, no checkpoints) into validation/<paper>/<family>/.
+  validation.py compact [--runs DIR]
+      the copying alone, for runs finished while their study still runs.
   validation.py report
       validation/REPORT.md, its figures and the machine-readable results
       (validation/weinhart2012/table1.json, validation/huet2021/runout.json) from the committed
@@ -102,6 +104,13 @@ def run_chute_study(study, args, runs):
            "--out", str(out)]
     print(" ".join(cmd), flush=True)
     subprocess.run(cmd, check=False)
+    compact_chute(study, out)
+
+
+def compact_chute(study, out: Path):
+    """Copies the study's tables and its finished cases' small files into validation/."""
+    if not out.exists():
+        return
     dest = study.folder(VALIDATION)
     dest.mkdir(parents=True, exist_ok=True)
     for table in study.tables:
@@ -460,11 +469,18 @@ def main():
     r.add_argument("--runs", default=str(VALIDATION / "runs"))
     r.add_argument("--only", help="studies, comma-separated (" + ",".join([c.name for c in CHUTE_STUDIES] +
                                                                          [f.name for f in FAMILIES]) + ")")
+    c = sub.add_parser("compact", help="keep the finished runs' results now (while a study still runs)")
+    c.add_argument("--runs", default=str(VALIDATION / "runs"))
     sub.add_parser("report")
     args = p.parse_args()
-    (run if args.command == "run" else report)(args)
-    if args.command == "run":
-        report(args)
+    if args.command == "compact":
+        for study in CHUTE_STUDIES:
+            compact_chute(study, study.folder(Path(args.runs).resolve()))
+        for fam in FAMILIES:
+            compact(fam, fam.folder(Path(args.runs).resolve()))
+    elif args.command == "run":
+        run(args)
+    report(args)
 
 
 if __name__ == "__main__":
