@@ -67,25 +67,28 @@ TEST(CheckpointFile, WorldStateRoundTripsBitForBit) {
   fs::remove_all(dir);
 }
 
-// A state gathered from ranks keeps their layout (cuts and each rank's share), so that a restart
-// on as many ranks can hand every rank its share back; shares that do not add up are refused.
+// A state gathered from ranks keeps their layout (the grid's cuts and each rank's share), so
+// that a restart on as many ranks can hand every rank its share back; shares that do not add up
+// are refused.
 TEST(CheckpointFile, RankLayoutRoundTripsAndMustAddUp) {
   const fs::path dir = testing::test_folder();
   io::Checkpoint c = settled_box_checkpoint();
   WorldState& w = c.world;
-  w.ranks = 2;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  w.ranks = 6;  // 3 x 1 x 2
   w.layout.axis = 2;
   w.layout.rebalance = true;
   w.layout.min_width = 2.6e-3;
-  w.layout.cut = {-std::numeric_limits<double>::infinity(), 0.0123, std::numeric_limits<double>::infinity()};
+  w.layout.cut[0] = {-kInf, 0.004, 0.01, kInf};
+  w.layout.cut[2] = {-kInf, 0.0123, kInf};
   const std::uint64_t n = w.particles.owned, pairs = w.pair_gid_i.size(), walls = w.wall_gid.size();
-  w.layout.particles = {n / 3, n - n / 3};
-  w.layout.pair_entries = {pairs / 2, pairs - pairs / 2};
-  w.layout.wall_entries = {walls, 0};
+  w.layout.particles = {n / 3, n / 3, 0, 0, 0, n - 2 * (n / 3)};
+  w.layout.pair_entries = {pairs / 2, 0, 0, 0, 0, pairs - pairs / 2};
+  w.layout.wall_entries = {walls, 0, 0, 0, 0, 0};
   io::write_checkpoint(dir / "c.h5", c);
   const WorldState back = io::read_checkpoint(dir / "c.h5").world;
-  EXPECT_TRUE(back.fits_ranks(2));
-  EXPECT_FALSE(back.fits_ranks(4));
+  EXPECT_TRUE(back.fits_ranks(6));
+  EXPECT_FALSE(back.fits_ranks(2));
   EXPECT_EQ(back.layout.axis, 2);
   EXPECT_TRUE(back.layout.rebalance);
   EXPECT_EQ(back.layout.min_width, 2.6e-3);

@@ -2,7 +2,7 @@
 # `talus run` under mpirun: the settling box (walls, rolling and tangential springs) on one rank
 # and on two reaches the same static state; the two-rank run's checkpoint restarts on one rank
 # and on four, and both go on alike; restarted on two ranks from a checkpoint written while the
-# pile still settles, the run goes on bit for bit. Usage: run_over_ranks.sh TALUS SCENARIO WORKDIR
+# pile still settles, the run goes on bit for bit, on slabs and on a 2 x 2 grid of ranks. Usage: run_over_ranks.sh TALUS SCENARIO WORKDIR
 set -eu
 talus=$1 scenario=$2 work=$3
 mpirun="mpirun --oversubscribe --allow-run-as-root -x OMP_NUM_THREADS=1"
@@ -14,9 +14,12 @@ first=$(ls two/checkpoints/checkpoint_*.h5 | head -n 1)
 $mpirun -n 2 "$talus" run "$scenario" --set run.end_time=0.3 --restart "$first" --out again2 --threads 1 --quiet
 "$talus" run "$scenario" --set run.end_time=0.35 --restart two/checkpoints/latest.h5 --out again1 --threads 1 --quiet
 $mpirun -n 4 "$talus" run "$scenario" --set run.end_time=0.35 --restart two/checkpoints/latest.h5 --out again4 --threads 1 --quiet
+grid="--set run.processors=[2,2,1] --set run.end_time=0.06 --threads 1 --quiet"
+$mpirun -n 4 "$talus" run "$scenario" $grid --out grid4 --set run.checkpoint_interval=0.03 --set run.checkpoint_keep=5
+$mpirun -n 4 "$talus" run "$scenario" $grid --out grid4again --restart "$(ls grid4/checkpoints/checkpoint_*.h5 | head -n 1)"
 /usr/bin/python3 - <<'PY'
 import json, sys, glob, os
-s = {d: json.load(open(d + "/summary.json")) for d in ["one", "two", "again1", "again4", "again2"]}
+s = {d: json.load(open(d + "/summary.json")) for d in ["one", "two", "again1", "again4", "again2", "grid4", "grid4again"]}
 fail = []
 def check(ok, what):
     if not ok:
@@ -40,9 +43,16 @@ check(rows["again2"] == rows["two"], "the 2-rank restart on 2 ranks left the 2-r
       next((f"{a} against {b}" for a, b in zip(rows["two"], rows["again2"]) if a != b), "rows differ"))
 check(s["again2"]["energies"] == s["two"]["energies"], "the 2-rank restart on 2 ranks ends elsewhere")
 check(float(rows["two"][11].split(",")[2]) > 1e-6, "the pile is at rest by t = 0.1: a weak test")
+# The same on a 2 x 2 grid of ranks, from t = 0.03.
+check(s["grid4"]["processors"] == [2, 2, 1] and s["grid4again"]["processors"] == [2, 2, 1], "the grid of ranks in summary.json")
+rows = {d: open(d + "/timeseries.csv").read().splitlines() for d in ["grid4", "grid4again"]}
+check(rows["grid4again"] == rows["grid4"], "the 2 x 2 restart left the 2 x 2 run: " +
+      next((f"{a} against {b}" for a, b in zip(rows["grid4"], rows["grid4again"]) if a != b), "rows differ"))
+check(s["grid4"]["particles_moved_between_ranks"] > 0, "particles crossed the cuts of the grid")
 check(not glob.glob(os.path.join(os.environ.get("TMPDIR", "/tmp"), "talus-two-rank*")), "rank scratch folders left behind")
 if fail:
     print("FAILED:", *fail, sep="\n  ")
     sys.exit(1)
-print("settling box over ranks: static states agree; the 2-rank checkpoint restarts on 1 and 4 ranks alike")
+print("settling box over ranks: static states agree; the 2-rank checkpoint restarts on 1 and 4 ranks alike;"
+      " restarts on 2 ranks and on a 2 x 2 grid go on bit for bit")
 PY

@@ -105,7 +105,8 @@ TEST(DistributedChute, SameTrajectoriesToRoundOffOverTheFirstHundredSteps) {
   spread->run(2000);
   ASSERT_GT(reference->diagnostics().elastic_tangential, 0);
   spread->distribute(comm);
-  EXPECT_EQ(spread->slabs().ranks(), comm.size());
+  const RankCounts n = spread->rank_grid().counts();
+  EXPECT_EQ(n[0] * n[1] * n[2], comm.size());
   reference->run(100);
   spread->run(100);
   const Difference d = compare(*reference, gather(*spread));
@@ -152,7 +153,7 @@ TEST(DistributedChute, ParticlesCrossCutsAndThePeriodicFaceWithTheirSprings) {
   auto reference = lattice_chute();
   auto spread = lattice_chute();
   spread->distribute(comm);
-  EXPECT_EQ(spread->slabs().axis, 0);
+  if (comm.size() > 1) EXPECT_GT(spread->rank_grid().counts()[0], 1);  // the slope is cut
   double crossed = 0;
   for (int k = 0; k < 5; ++k) {
     reference->run(1000);
@@ -170,6 +171,36 @@ TEST(DistributedChute, ParticlesCrossCutsAndThePeriodicFaceWithTheirSprings) {
   EXPECT_LT(d.velocity, 1e-8);
 }
 
+// Every grid of the ranks (4 ranks: 4 x 1 x 1, 2 x 2 x 1, 1 x 2 x 2, ...), with each of its cut
+// axes as the pair list's slab axis, follows the same trajectories from the lattice on, as it
+// collapses into a flow across all cuts, their edges and the periodic faces.
+TEST(DistributedChute, EveryGridOfRanksSameAsOneRank) {
+  const Communicator& comm = Communicator::world();
+  auto reference = lattice_chute();
+  reference->run(4000);
+  const int n = comm.size();
+  int grids = 0;
+  for (int px = 1; px <= n; ++px)
+    for (int py = 1; py * px <= n; ++py) {
+      if (n % (px * py)) continue;
+      const RankCounts counts{px, py, n / (px * py)};
+      for (int slab_axis = 0; slab_axis < 3; ++slab_axis) {
+        if (counts[slab_axis] == 1 && n > 1) continue;
+        auto spread = lattice_chute();
+        spread->distribute(comm, counts, slab_axis);
+        ASSERT_EQ(spread->rank_grid().counts(), counts);
+        spread->run(4000);
+        const Difference d = compare(*reference, gather(*spread));
+        EXPECT_LT(d.position, 1e-10) << counts[0] << " x " << counts[1] << " x " << counts[2] << ", slab axis " << slab_axis;
+        EXPECT_LT(d.velocity, 1e-8);
+        EXPECT_EQ(spread->diagnostics().contacts, reference->diagnostics().contacts);
+        if (n > 1) EXPECT_GT(comm.sum(static_cast<double>(spread->particles_moved_between_ranks())), 0);
+        ++grids;
+      }
+    }
+  EXPECT_GE(grids, n == 4 ? 9 : n == 2 ? 3 : 1);
+}
+
 TEST(DistributedChute, SlabsAcrossTheDepthWithAnEmptyRank) {
   // Slabs along z, not periodic: the base and the bottom layer, the next layer, the rest of the
   // flow, and (from four ranks on) a slab above it that no particle reaches.
@@ -180,7 +211,7 @@ TEST(DistributedChute, SlabsAcrossTheDepthWithAnEmptyRank) {
   const double inner[] = {1.6, 3.2, 30.0};
   for (int r = 1; r < comm.size(); ++r) cut.push_back(r <= 3 ? inner[r - 1] : 30.0 + 2 * (r - 3));
   cut.push_back(std::numeric_limits<double>::infinity());
-  spread->distribute(SlabDecomposition::with_cuts(comm, spread->settings().domain, 2, cut, 1.5));
+  spread->distribute(RankGrid::slabs(comm, spread->settings().domain, 2, cut, 1.5));
   reference->run(3000);
   spread->run(3000);
   const Difference d = compare(*reference, gather(*spread));

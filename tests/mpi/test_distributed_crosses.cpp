@@ -3,6 +3,7 @@
 // throng thrown at the floor that collides across the cuts, many crosses straddling a cut.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -90,7 +91,7 @@ TEST(DistributedCrosses, StackSlidesAcrossTheCutSameAsOneRank) {
   spread->run(8000);
   ASSERT_GT(reference->diagnostics().contacts, 0u);
   const std::vector<double> cut = cuts_along_x(comm, 0.24);
-  spread->distribute(SlabDecomposition::with_cuts(comm, spread->settings().domain, 0, cut, 0.05));
+  spread->distribute(RankGrid::slabs(comm, spread->settings().domain, 0, cut, 0.05));
   reference->run(32000);  // 0.1 s in all: the stack has stopped past the cut
   spread->run(32000);
   const auto [worst, worst_turn] = worst_difference(comm, *reference, *spread);
@@ -118,7 +119,7 @@ TEST(DistributedCrosses, ThrownCrossesSameAsOneRank) {
   ASSERT_GT(reference->diagnostics().contacts, 0u);
   ASSERT_GT(reference->diagnostics().wall_contacts, 0u);
   const std::vector<double> cut = cuts_along_x(comm, 0.24);
-  spread->distribute(SlabDecomposition::with_cuts(comm, spread->settings().domain, 0, cut, 0.05));
+  spread->distribute(RankGrid::slabs(comm, spread->settings().domain, 0, cut, 0.05));
   // Colliding crosses are chaotic: a difference in the last bit (the sums of a body's contacts
   // run in another order once the ranks' lists differ) grows tenfold every 100-200 steps,
   // measured on 2 ranks: 1e-17 m after 200 steps, 1e-15 after 400, 1e-12 after 740, 0.7 mm
@@ -138,6 +139,73 @@ TEST(DistributedCrosses, ThrownCrossesSameAsOneRank) {
   for (std::size_t i = 0; i < p.owned; ++i)
     for (std::size_t c = 1; c + 1 < cut.size(); ++c) straddling += std::abs(p.position[i].x - cut[c]) < p.radius[i];
   if (comm.size() > 1) EXPECT_GT(comm.sum(static_cast<double>(straddling)), 0);
+}
+
+// Cuts along x and, from four ranks on, along `second`, at `at`: a grid of 2 x 2 boxes.
+RankGrid corner_grid(const Communicator& comm, const Domain& domain, int second, const Vec3& at, int slab_axis) {
+  const double inf = std::numeric_limits<double>::infinity();
+  std::array<std::vector<double>, 3> cut;
+  if (comm.size() >= 2) cut[0] = {-inf, at.x, inf};
+  if (comm.size() >= 4) cut[second] = {-inf, at[second], inf};
+  return RankGrid::with_cuts(comm, domain, cut, 0.02, comm.size() >= 4 ? slab_axis : 0);
+}
+
+// The sliding stack again, now moving across x and y, B ahead of A in both. The grid's corner
+// lies just ahead of A's centre on A's path, so that B's box is the one diagonally across from
+// A's: A's box lists the pair, and A then passes both cuts before the next rebuild, through a
+// neighbour, where the pair's memory (springs and contact points) must follow it.
+TEST(DistributedCrosses, StackSlidesAcrossACornerSameAsOneRank) {
+  const Communicator& comm = Communicator::world();
+  if (comm.size() != 1 && comm.size() != 2 && comm.size() != 4) GTEST_SKIP() << "a 2 x 2 grid needs 1, 2 or 4 ranks";
+  for (const int slab_axis : {0, 1}) {
+    auto reference = sliding_stack();
+    auto spread = sliding_stack();
+    for (World* w : {reference.get(), spread.get()}) {
+      w->run(8000);  // landed, sliding along x
+      ASSERT_GT(w->diagnostics().contacts, 0u);
+      ParticleStore& p = w->particles_mutable();
+      p.velocity[0].y += 0.15;  // and now along y too, B faster
+      p.velocity[1].y += 0.2;
+      w->run(2000);
+    }
+    const ParticleStore& q = reference->particles();
+    const Vec3 a = q.position[0], b = q.position[1], corner = a + 2e-5 * q.velocity[0];
+    ASSERT_TRUE(b.x > corner.x && b.y > corner.y) << "B is not ahead of A";
+    spread->distribute(corner_grid(comm, spread->settings().domain, 1, corner, slab_axis));
+    reference->run(6000);  // the stack's springs stay loaded: B still slides on A
+    spread->run(6000);
+    const auto [worst, worst_turn] = worst_difference(comm, *reference, *spread);
+    EXPECT_LT(worst, 1e-12);
+    EXPECT_LT(worst_turn, 1e-10);
+    const Diagnostics da = reference->diagnostics(), db = spread->diagnostics();
+    EXPECT_GT(da.contacts, 0u);  // B still lies on A
+    EXPECT_EQ(db.contacts, da.contacts);
+    EXPECT_EQ(db.wall_contacts, da.wall_contacts);
+    EXPECT_NEAR(db.elastic_tangential, da.elastic_tangential, 1e-6 * da.elastic_tangential);
+  }
+}
+
+// The thrown crosses on a grid cut along x and z (at 12 mm, through the pile): crosses collide
+// across both cuts and their edge.
+TEST(DistributedCrosses, ThrownCrossesOnAGridSameAsOneRank) {
+  const Communicator& comm = Communicator::world();
+  if (comm.size() != 1 && comm.size() != 2 && comm.size() != 4) GTEST_SKIP() << "a 2 x 2 grid needs 1, 2 or 4 ranks";
+  for (const int slab_axis : {0, 2}) {
+    auto reference = thrown_crosses();
+    auto spread = thrown_crosses();
+    reference->run(16000);
+    spread->run(16000);
+    spread->distribute(corner_grid(comm, spread->settings().domain, 2, {0.12, 0, 0.012}, slab_axis));
+    reference->run(500);
+    spread->run(500);
+    const auto [worst, worst_turn] = worst_difference(comm, *reference, *spread);
+    EXPECT_LT(worst, 1e-12);
+    EXPECT_LT(worst_turn, 1e-10);
+    const Diagnostics a = reference->diagnostics(), b = spread->diagnostics();
+    EXPECT_EQ(b.contacts, a.contacts);
+    EXPECT_EQ(b.wall_contacts, a.wall_contacts);
+    EXPECT_NEAR(b.elastic_tangential, a.elastic_tangential, 1e-6 * a.elastic_tangential);
+  }
 }
 
 }  // namespace

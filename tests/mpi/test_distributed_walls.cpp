@@ -66,7 +66,7 @@ TEST(DistributedWalls, DamBreakOverTheFloorSameAsOneRank) {
   std::vector<double> cut{-inf};
   for (int r = 1; r < comm.size(); ++r) cut.push_back(1.5 + 3.0 * (r - 1));
   cut.push_back(inf);
-  spread->distribute(SlabDecomposition::with_cuts(comm, spread->settings().domain, 0, cut, 1.5));
+  spread->distribute(RankGrid::slabs(comm, spread->settings().domain, 0, cut, 1.5));
   // 1.0 time units, 0.95 after the gate's removal. This collisional collapse is chaotic: a
   // difference in the last bit (the sums of a particle's contacts run in another order once the
   // ranks' lists differ) grows a hundredfold every 0.2 time units, measured: 1e-13 d at t = 1.05,

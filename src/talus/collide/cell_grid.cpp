@@ -80,16 +80,6 @@ CellCoord CellGrid::coord_of(const Vec3& x) const {
   return c;
 }
 
-CellCoord CellGrid::halo_coord_of(const Vec3& x) const {
-  CellCoord c;
-  for (int a = 0; a < 3; ++a) {
-    const double k = std::floor((x[a] - origin_[a]) / width_[a]);
-    c[a] = static_cast<int>(std::clamp(k, static_cast<double>(first_[a]), static_cast<double>(last_[a])));
-  }
-  c[slab_axis_] = last_[slab_axis_];
-  return c;
-}
-
 std::int64_t CellGrid::linear_size() const {
   std::int64_t n = 1;
   for (int a = 0; a < 3; ++a) n *= last_[a] - first_[a] + 1;

@@ -21,10 +21,9 @@ class CellGrid {
              int slab_axis = -1);
 
   CellCoord coord_of(const Vec3& x) const;  ///< cell of an owned particle (clamped into the grid)
-  // Cell of a ghost from the sub-domain above (halo_exchange.h): the layer past the last slab,
-  // and along the other axes its cell in the extended range (ghost layers included).
-  CellCoord halo_coord_of(const Vec3& x) const;
   int cells(int axis) const { return count_[axis]; }
+  double origin(int axis) const { return origin_[axis]; }  ///< m, where cell 0 starts
+  double width(int axis) const { return width_[axis]; }    ///< m, of a cell
   int slab_axis() const { return slab_axis_; }  ///< the axis whose cell layers hold the particles most evenly
   // Linear index of a cell with the slab axis slowest, over the extended range [first, last].
   std::int64_t linear(const CellCoord& c) const {

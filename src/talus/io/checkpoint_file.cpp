@@ -1,6 +1,7 @@
 #include "talus/io/checkpoint_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "talus/io/atomic_file.h"
@@ -177,9 +178,16 @@ void write_world(Hdf5Writer& h5, const WorldState& s) {
   write_memory(h5, "contacts/walls", s.wall_memory);
   write_points(h5, "contacts/walls/points", s.wall_sub);
   const WorldState::RankLayout& l = s.layout;
-  if (!l.cut.empty()) {  // a state gathered from ranks: their layout, for a restart on as many
-    h5.write("world/layout/cut", l.cut);
-    h5.write("world/layout/slabs", std::vector<double>{static_cast<double>(l.axis), l.rebalance ? 1.0 : 0.0, l.min_width});
+  if (!l.particles.empty()) {  // a state gathered from ranks: their layout, for a restart on as many
+    // The cuts of the cut axes, x's first; `slabs`: the slab axis, whether the cuts follow the
+    // particles, the narrowest slab allowed, then the ranks along x, y and z.
+    std::vector<double> cut, slabs{static_cast<double>(l.axis), l.rebalance ? 1.0 : 0.0, l.min_width};
+    for (const std::vector<double>& c : l.cut) {
+      cut.insert(cut.end(), c.begin(), c.end());
+      slabs.push_back(c.empty() ? 1.0 : static_cast<double>(c.size() - 1));
+    }
+    h5.write("world/layout/cut", cut);
+    h5.write("world/layout/slabs", slabs);
     std::vector<std::uint64_t> shares;
     for (std::size_t r = 0; r < l.particles.size(); ++r)
       shares.insert(shares.end(), {l.particles[r], l.pair_entries[r], l.wall_entries[r]});
@@ -239,12 +247,28 @@ WorldState read_world(const Hdf5Reader& h5) {
   s.wall_sub = read_points(h5, "contacts/walls/points");
   if (h5.has("world/layout/cut")) {
     WorldState::RankLayout& l = s.layout;
-    l.cut = h5.read_double("world/layout/cut");
-    const std::vector<double> slabs = h5.read_double("world/layout/slabs");
+    const std::vector<double> cut = h5.read_double("world/layout/cut");
+    std::vector<double> slabs = h5.read_double("world/layout/slabs");
     const std::vector<std::uint64_t> shares = h5.read_u64("world/layout/shares", 3);
-    if (slabs.size() != 3 || !(slabs[0] == 0 || slabs[0] == 1 || slabs[0] == 2) || shares.size() != 3 * s.ranks ||
-        l.cut.size() != s.ranks + 1)
-      throw std::runtime_error(h5.path().string() + ": rank layout damaged");
+    const auto damaged = [&h5] { return std::runtime_error(h5.path().string() + ": rank layout damaged"); };
+    if (!(slabs.size() == 3 || slabs.size() == 6) || !(slabs[0] == 0 || slabs[0] == 1 || slabs[0] == 2) ||
+        shares.size() != 3 * s.ranks)
+      throw damaged();
+    if (slabs.size() == 3) {  // slabs along one axis, as files written before grids of ranks
+      slabs.resize(6, 1.0);
+      slabs[3 + static_cast<int>(slabs[0])] = static_cast<double>(s.ranks);
+    }
+    std::size_t at = 0, grid = 1;
+    for (int a = 0; a < 3; ++a) {
+      const double n = slabs[3 + a];
+      if (!(n >= 1 && n == std::floor(n) && n <= static_cast<double>(s.ranks))) throw damaged();
+      grid *= static_cast<std::size_t>(n);
+      if (n == 1) continue;
+      if (at + static_cast<std::size_t>(n) + 1 > cut.size()) throw damaged();
+      l.cut[a].assign(cut.begin() + static_cast<std::ptrdiff_t>(at), cut.begin() + static_cast<std::ptrdiff_t>(at + n + 1));
+      at += static_cast<std::size_t>(n) + 1;
+    }
+    if (at != cut.size() || grid != s.ranks) throw damaged();
     l.axis = static_cast<int>(slabs[0]);
     l.rebalance = slabs[1] != 0;
     l.min_width = slabs[2];

@@ -1,12 +1,14 @@
 #include "talus/parallel/halo_exchange.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace talus {
 
 namespace {
-// Message tags: creation, the forward and the reverse exchange each use two (sizes, bytes).
-constexpr int kCreateTag = 100, kForwardTag = 102, kReverseTag = 104;
+// Message tags: the passes of creation, then the forward and the reverse exchange of each pass.
+constexpr int kCreateTag = 100, kForwardTag = 120, kReverseTag = 140;
 
 struct GhostState {
   Vec3 position, velocity, angular_velocity;
@@ -35,77 +37,129 @@ struct GhostConstants {
   std::int32_t species, shape;
   std::uint32_t gid;
 };
+
+// The cell of a copy that came across `axis` from the side `step` (+1: from above): the ghost
+// layer there. Along the slab axis a copy from a rank of the same slab lies in the layer its
+// owner put it in (the grids of those ranks match along it), which decides which of the two
+// lists the pair (pair_list.h); along other axes any layer next to it finds its neighbours.
+CellCoord cell_across(const CellGrid& grid, const Vec3& x, int axis, int step) {
+  CellCoord c;
+  for (int a = 0; a < 3; ++a) {
+    const double k = std::floor((x[a] - grid.origin(a)) / grid.width(a));
+    const bool inside = a == grid.slab_axis();
+    const int lo = inside ? 0 : grid.first(a), hi = inside ? grid.cells(a) - 1 : grid.last(a);
+    c[a] = static_cast<int>(std::clamp(k, static_cast<double>(lo), static_cast<double>(hi)));
+  }
+  c[axis] = step > 0 ? grid.last(axis) : grid.first(axis);
+  return c;
+}
 }  // namespace
 
-void HaloExchange::create(ParticleStore& p, const SlabDecomposition& slabs, const CellGrid& grid, double band,
+void HaloExchange::create(ParticleStore& p, const RankGrid& ranks, const CellGrid& grid, double band,
                           std::vector<CellCoord>& cell_of) {
-  slabs_ = &slabs;
-  const int axis = slabs.axis;
-  const double lo = slabs.lo();
-  shift_ = slabs.rank() == 0 && slabs.periodic ? slabs.length : 0.0;
-  sent_index_.clear();
-  for (std::size_t k = 0; k < p.size(); ++k)
-    if (p.position[k][axis] - lo < band) sent_index_.push_back(static_cast<std::uint32_t>(k));
-
-  std::vector<std::byte> out;
-  ByteWriter w(out);
-  w.put(static_cast<std::uint64_t>(sent_index_.size()));
-  for (const std::uint32_t k : sent_index_) {
-    w.put(state_of(p, k, axis, shift_));
-    w.put(GhostConstants{p.radius[k], p.inv_mass[k], p.mass[k], p.inv_inertia[k], p.species[k], p.shape[k], p.gid[k]});
+  ranks_ = &ranks;
+  passes_.clear();
+  int tag = kCreateTag;
+  for (const int axis : ranks.stage_axes()) {
+    const SlabDecomposition& slabs = ranks.axes[axis];
+    const double length = slabs.periodic ? slabs.length : 0.0;
+    // Down: the copies near the lower cut go to the rank below, and those from above arrive.
+    Pass down{axis, ranks.neighbour(axis, -1), ranks.neighbour(axis, +1), 0,
+              slabs.index == 0 ? length : 0.0, {}, 0, 0};
+    Pass up{axis, ranks.neighbour(axis, +1), ranks.neighbour(axis, -1), 0,
+            slabs.index + 1 == slabs.slabs() ? -length : 0.0, {}, 0, 0};
+    const bool both_ways = axis != ranks.slab_axis;
+    const double lo = slabs.lo(), hi = slabs.hi();
+    for (std::size_t k = 0; k < p.size(); ++k) {  // everything held before this stage
+      if (p.position[k][axis] - lo < band) down.sent.push_back(static_cast<std::uint32_t>(k));
+      if (both_ways && hi - p.position[k][axis] < band) up.sent.push_back(static_cast<std::uint32_t>(k));
+    }
+    std::vector<Pass> stage;
+    stage.push_back(std::move(down));
+    if (both_ways) stage.push_back(std::move(up));
+    for (Pass& pass : stage) {
+      pass.tag = tag;
+      tag += 2;
+      std::vector<std::byte> out;
+      ByteWriter w(out);
+      w.put(static_cast<std::uint64_t>(pass.sent.size()));
+      for (const std::uint32_t k : pass.sent) {
+        w.put(state_of(p, k, axis, pass.shift));
+        w.put(GhostConstants{p.radius[k], p.inv_mass[k], p.mass[k], p.inv_inertia[k], p.species[k], p.shape[k], p.gid[k]});
+      }
+      if (pass.to < 0) pass.sent.clear();  // nobody there: the copies stay unsent
+      const std::vector<std::byte> in = ranks.comm->exchange(out, pass.to, pass.from, pass.tag);
+      pass.first = p.size();
+      pass.received = 0;
+      if (!in.empty()) {
+        ByteReader r(in);
+        pass.received = r.get<std::uint64_t>();
+        p.resize(pass.first + pass.received);
+        cell_of.resize(pass.first + pass.received);
+        const int step = &pass == &stage.front() ? +1 : -1;  // down's copies come from above
+        for (std::size_t g = 0; g < pass.received; ++g) {
+          const std::size_t k = pass.first + g;
+          const auto s = r.get<GhostState>();
+          const auto c = r.get<GhostConstants>();
+          set_state(p, k, s);
+          p.radius[k] = c.radius;
+          p.inv_mass[k] = c.inv_mass;
+          p.mass[k] = c.mass;
+          p.inv_inertia[k] = c.inv_inertia;
+          p.species[k] = c.species;
+          p.shape[k] = c.shape;
+          p.gid[k] = c.gid;
+          cell_of[k] = cell_across(grid, s.position, axis, step);
+        }
+      }
+      passes_.push_back(std::move(pass));
+    }
   }
-  const std::vector<std::byte> in = slabs.comm->exchange(out, slabs.lower(), slabs.upper(), kCreateTag);
+}
 
-  first_ = p.size();
-  received_ = 0;
-  if (in.empty()) return;
-  ByteReader r(in);
-  received_ = r.get<std::uint64_t>();
-  p.resize(first_ + received_);
-  cell_of.resize(first_ + received_);
-  for (std::size_t g = 0; g < received_; ++g) {
-    const std::size_t k = first_ + g;
-    const auto s = r.get<GhostState>();
-    const auto c = r.get<GhostConstants>();
-    set_state(p, k, s);
-    p.radius[k] = c.radius;
-    p.inv_mass[k] = c.inv_mass;
-    p.mass[k] = c.mass;
-    p.inv_inertia[k] = c.inv_inertia;
-    p.species[k] = c.species;
-    p.shape[k] = c.shape;
-    p.gid[k] = c.gid;
-    cell_of[k] = grid.halo_coord_of(s.position);
-  }
+std::size_t HaloExchange::count() const {
+  std::size_t n = 0;
+  for (const Pass& pass : passes_) n += pass.received;
+  return n;
+}
+
+std::vector<std::uint32_t> HaloExchange::sent_indices() const {
+  std::vector<std::uint32_t> all;
+  for (const Pass& pass : passes_) all.insert(all.end(), pass.sent.begin(), pass.sent.end());
+  return all;
 }
 
 // Between rebuilds both sides know the message sizes: one message each way.
 void HaloExchange::forward(ParticleStore& p) const {
-  const int axis = slabs_->axis;
-  out_.clear();
-  ByteWriter w(out_);
-  for (const std::uint32_t k : sent_index_) w.put(state_of(p, k, axis, shift_));
-  in_.resize(received_ * sizeof(GhostState));
-  slabs_->comm->exchange_sized(out_, slabs_->lower(), slabs_->upper(), kForwardTag, in_);
-  if (in_.size() != received_ * sizeof(GhostState)) throw std::logic_error("halo forward exchange out of step");
-  ByteReader r(in_);
-  for (std::size_t g = 0; g < received_; ++g) set_state(p, first_ + g, r.get<GhostState>());
+  for (const Pass& pass : passes_) {
+    out_.clear();
+    ByteWriter w(out_);
+    for (const std::uint32_t k : pass.sent) w.put(state_of(p, k, pass.axis, pass.shift));
+    in_.resize(pass.received * sizeof(GhostState));
+    ranks_->comm->exchange_sized(out_, pass.to, pass.from, kForwardTag + pass.tag - kCreateTag, in_);
+    if (in_.size() != pass.received * sizeof(GhostState)) throw std::logic_error("halo forward exchange out of step");
+    ByteReader r(in_);
+    for (std::size_t g = 0; g < pass.received; ++g) set_state(p, pass.first + g, r.get<GhostState>());
+  }
 }
 
 void HaloExchange::reverse(ParticleStore& p) const {
-  out_.clear();
-  ByteWriter w(out_);
-  for (std::size_t g = 0; g < received_; ++g) {
-    w.put(p.force[first_ + g]);
-    w.put(p.torque[first_ + g]);
-  }
-  in_.resize(sent_index_.size() * 2 * sizeof(Vec3));
-  slabs_->comm->exchange_sized(out_, slabs_->upper(), slabs_->lower(), kReverseTag, in_);
-  if (in_.size() != sent_index_.size() * 2 * sizeof(Vec3)) throw std::logic_error("halo reverse exchange out of step");
-  ByteReader r(in_);
-  for (const std::uint32_t k : sent_index_) {
-    p.force[k] += r.get<Vec3>();
-    p.torque[k] += r.get<Vec3>();
+  for (auto it = passes_.rbegin(); it != passes_.rend(); ++it) {
+    const Pass& pass = *it;
+    out_.clear();
+    ByteWriter w(out_);
+    for (std::size_t g = 0; g < pass.received; ++g) {
+      w.put(p.force[pass.first + g]);
+      w.put(p.torque[pass.first + g]);
+    }
+    in_.resize(pass.sent.size() * 2 * sizeof(Vec3));
+    ranks_->comm->exchange_sized(out_, pass.from, pass.to, kReverseTag + pass.tag - kCreateTag, in_);
+    if (in_.size() != pass.sent.size() * 2 * sizeof(Vec3)) throw std::logic_error("halo reverse exchange out of step");
+    ByteReader r(in_);
+    for (const std::uint32_t k : pass.sent) {
+      p.force[k] += r.get<Vec3>();
+      p.torque[k] += r.get<Vec3>();
+    }
   }
 }
 

@@ -1,40 +1,52 @@
 #pragma once
-// Ghosts from the neighbouring sub-domain above (slab_decomposition.h). At a rebuild each rank
-// sends the lower neighbour copies of its particles within one interaction range of its lower
-// cut (owned ones and their periodic images along the other axes, so that corners come along),
-// shifted by the box length where the cut is the periodic face; every step it sends their
-// fresh state down (forward) and receives the forces its particles' copies took there, added
-// to them before periodic images fold onto their owners (reverse). One rank along a periodic
-// axis exchanges with itself: the periodic images along that axis.
+// Ghosts from the neighbouring sub-domains (rank_grid.h), made in stages, one per cut axis as
+// in LAMMPS's comm: each stage sends copies of every particle held so far (owned ones, their
+// periodic images along uncut axes, the copies of earlier stages) within one interaction range
+// of a cut, so that edges and corners come along. Across the other cut axes a stage sends both
+// ways; across the slab axis, last, it sends down only, and the copies from the rank above
+// fill the layer of cells above the sub-domain. A copy sent across a periodic face is shifted
+// by the box length.
+//
+// Every step the stages send their copies' fresh state in the same order (forward), and the
+// forces the copies took go back in the reverse order (reverse), each added to what was sent,
+// before periodic images fold onto their owners. One rank along a periodic axis makes its
+// images there itself (periodic_ghosts.h).
 #include <cstdint>
 #include <vector>
 
 #include "talus/body/particles.h"
 #include "talus/collide/cell_grid.h"
-#include "talus/parallel/slab_decomposition.h"
+#include "talus/parallel/rank_grid.h"
 
 namespace talus {
 
 class HaloExchange {
  public:
-  // Sends the particles at [0, size) within `band` of the lower cut, appends those that
-  // arrive from above as ghosts with their cells (the layer above the grid's last slab).
-  void create(ParticleStore& particles, const SlabDecomposition& slabs, const CellGrid& grid, double band,
+  // Appends the copies from the neighbours as ghosts, with their cells: along the axis they
+  // came across, the layer past the grid's end on their side.
+  void create(ParticleStore& particles, const RankGrid& ranks, const CellGrid& grid, double band,
               std::vector<CellCoord>& cell_of);
   // Ghosts take their originals' positions, orientations and velocities; their forces are zeroed.
   void forward(ParticleStore& particles) const;
   // The originals receive the forces and torques their ghosts took.
   void reverse(ParticleStore& particles) const;
 
-  std::size_t first() const { return first_; }  ///< index of the first ghost from above
-  std::size_t count() const { return received_; }
-  const std::vector<std::uint32_t>& sent_indices() const { return sent_index_; }  ///< sent down, owned or images
+  std::size_t first() const { return passes_.empty() ? 0 : passes_.front().first; }  ///< the first ghost from a rank
+  std::size_t count() const;  ///< ghosts from other ranks (or, along a periodic axis of two ranks, from itself)
+  // Everything that was copied to a neighbour: owned particles, images, copies of earlier stages.
+  std::vector<std::uint32_t> sent_indices() const;
 
  private:
-  const SlabDecomposition* slabs_ = nullptr;
-  std::vector<std::uint32_t> sent_index_;  ///< the particles sent down, in message order
-  double shift_ = 0;                       ///< m, added to the sent coordinate (the periodic face)
-  std::size_t first_ = 0, received_ = 0;
+  // One message of a stage: copies of `sent` go to `to` (shifted by `shift` along `axis`),
+  // and `received` copies come from `from`, appended from index `first`.
+  struct Pass {
+    int axis = 0, to = -1, from = -1, tag = 0;
+    double shift = 0;
+    std::vector<std::uint32_t> sent;
+    std::size_t first = 0, received = 0;
+  };
+  const RankGrid* ranks_ = nullptr;
+  std::vector<Pass> passes_;
   mutable std::vector<std::byte> out_, in_;  ///< the every-step messages, kept to spare the allocations
 };
 

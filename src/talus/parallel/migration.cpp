@@ -6,7 +6,7 @@
 namespace talus {
 
 namespace {
-constexpr int kMigrateTag = 110;
+constexpr int kMigrateTag = 160;  // past the halo's (halo_exchange.cpp)
 
 struct ParticleRow {
   Vec3 position, velocity, angular_velocity, force, torque;
@@ -92,106 +92,122 @@ struct Parcel {
 };
 }  // namespace
 
-MigrationCount migrate(ParticleStore& p, const SlabDecomposition& slabs, CarriedContacts& carried,
+MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts& carried,
                        std::vector<WallMemoryRecord>& wall_memories, const MemoryLayout& layout,
                        std::size_t gid_limit, std::vector<SubContactList>* wall_points) {
-  const int me = slabs.rank(), lower = slabs.lower(), upper = slabs.upper();
-  // Parcels to the neighbours below [0] and above [1]; one parcel if they are the same rank.
-  Parcel parcel[2];
-  const auto parcel_for = [&](int rank) -> Parcel& { return rank == lower ? parcel[0] : parcel[1]; };
-  std::vector<char> owned_after(gid_limit, 0);
-  std::vector<int> destination(gid_limit, -1);
-  std::vector<std::uint32_t> order, leaving;
-  for (std::size_t i = 0; i < p.owned; ++i) {
-    const int owner = slabs.owner_of(p.position[i][slabs.axis]);
-    if (owner == me) {
-      order.push_back(static_cast<std::uint32_t>(i));
-      owned_after[p.gid[i]] = 1;
-      continue;
-    }
-    if (owner != lower && owner != upper)
-      throw std::runtime_error("particle " + std::to_string(p.gid[i]) + " moved from rank " + std::to_string(me) +
-                               " to rank " + std::to_string(owner) + ", past a neighbour, between two rebuilds");
-    parcel_for(owner).particles.push_back(row_of(p, i));
-    leaving.push_back(static_cast<std::uint32_t>(i));
-    destination[p.gid[i]] = owner;
-  }
-  std::vector<WallMemoryRecord> staying;
-  std::vector<SubContactList> staying_points;
-  for (std::size_t n = 0; n < wall_memories.size(); ++n) {
-    const WallMemoryRecord& r = wall_memories[n];
-    const bool stays = destination[r.gid] < 0;
-    Parcel* out = stays ? nullptr : &parcel_for(destination[r.gid]);
-    (stays ? staying : out->wall_records).push_back(r);
-    if (wall_points) (stays ? staying_points : out->wall_points).push_back(std::move((*wall_points)[n]));
-  }
-  wall_memories = std::move(staying);
-  if (wall_points) *wall_points = std::move(staying_points);
-
-  // Records of pairs this rank no longer holds wholly go to the neighbours, who may now list them.
   const bool with_points = wall_points != nullptr;  // shaped bodies
-  std::vector<CarriedRecord> kept;
-  std::vector<SubContactList> kept_points;
+  std::vector<char> owned(gid_limit, 0);
+  for (std::size_t i = 0; i < p.owned; ++i) owned[p.gid[i]] = 1;
+  std::vector<CarriedRecord> records;
+  std::vector<SubContactList> record_points;
   for (std::uint32_t a = 0; a < gid_limit; ++a)
     for (std::uint32_t k = carried.start[a]; k < carried.start[a + 1]; ++k) {
-      const CarriedRecord r = carried_record(carried, a, k);
-      const auto add = [&](std::vector<CarriedRecord>& records, std::vector<SubContactList>& points) {
-        records.push_back(r);
-        if (with_points) points.push_back(carried.points[k]);
+      records.push_back(carried_record(carried, a, k));
+      if (with_points) record_points.push_back(std::move(carried.points[k]));
+    }
+
+  MigrationCount count;
+  std::vector<int> destination(gid_limit, -1);
+  int tag = kMigrateTag;
+  for (const int axis : ranks.stage_axes()) {
+    const SlabDecomposition& slabs = ranks.axes[axis];
+    const int me = slabs.index, lower = slabs.lower(), upper = slabs.upper();
+    const int lower_rank = ranks.neighbour(axis, -1), upper_rank = ranks.neighbour(axis, +1);
+    // Parcels to the neighbours below [0] and above [1]; one parcel if they are the same rank.
+    Parcel parcel[2];
+    const auto parcel_for = [&](int slab) -> Parcel& { return slab == lower ? parcel[0] : parcel[1]; };
+    std::vector<std::uint32_t> order, leaving;
+    for (std::size_t i = 0; i < p.owned; ++i) {
+      const int owner = slabs.owner_of(p.position[i][axis]);
+      if (owner == me) {
+        order.push_back(static_cast<std::uint32_t>(i));
+        continue;
+      }
+      if (owner != lower && owner != upper)
+        throw std::runtime_error("particle " + std::to_string(p.gid[i]) + " moved from slab " + std::to_string(me) +
+                                 " to slab " + std::to_string(owner) + " along axis " + std::to_string(axis) +
+                                 ", past a neighbour, between two rebuilds");
+      parcel_for(owner).particles.push_back(row_of(p, i));
+      leaving.push_back(static_cast<std::uint32_t>(i));
+      destination[p.gid[i]] = owner;
+      owned[p.gid[i]] = 0;
+    }
+    std::vector<WallMemoryRecord> staying;
+    std::vector<SubContactList> staying_points;
+    for (std::size_t n = 0; n < wall_memories.size(); ++n) {
+      const WallMemoryRecord& r = wall_memories[n];
+      const bool stays = destination[r.gid] < 0;
+      Parcel* out = stays ? nullptr : &parcel_for(destination[r.gid]);
+      (stays ? staying : out->wall_records).push_back(r);
+      if (wall_points) (stays ? staying_points : out->wall_points).push_back(std::move((*wall_points)[n]));
+    }
+    wall_memories = std::move(staying);
+    if (wall_points) *wall_points = std::move(staying_points);
+    for (const std::uint32_t i : leaving) destination[p.gid[i]] = -1;
+
+    // Records of pairs this rank does not hold wholly go to the neighbours, who may list them
+    // now or pass them on along the next axis (a pair across a corner); all stay here until
+    // the last stage has run.
+    for (std::size_t k = 0; k < records.size(); ++k) {
+      const CarriedRecord& r = records[k];
+      if (owned[r.a] && owned[r.b]) continue;
+      const auto add = [&](Parcel& to) {
+        to.records.push_back(r);
+        if (with_points) to.record_points.push_back(record_points[k]);
       };
-      if (owned_after[r.a] || owned_after[r.b]) add(kept, kept_points);
-      if (owned_after[r.a] && owned_after[r.b]) continue;
-      if (lower >= 0 && lower != me) add(parcel[0].records, parcel[0].record_points);
-      if (upper >= 0 && upper != me && upper != lower) add(parcel[1].records, parcel[1].record_points);
+      if (lower_rank >= 0) add(parcel[0]);
+      if (upper_rank >= 0 && upper_rank != lower_rank) add(parcel[1]);
     }
 
-  // Down, then up (each rank sends to one neighbour and receives from the other).
-  MigrationCount count{leaving.size(), 0};
-  std::vector<Parcel> arrived;
-  const auto swap_with = [&](int to, int from, const Parcel& out, int tag) {
-    if ((to < 0 || to == me) && (from < 0 || from == me)) return;
-    arrived.push_back(Parcel::from(slabs.comm->exchange(out.bytes(), to == me ? -1 : to, from == me ? -1 : from, tag)));
-  };
-  swap_with(lower, upper, parcel[0], kMigrateTag);
-  if (upper != lower) swap_with(upper, lower, parcel[1], kMigrateTag + 2);
+    // Down, then up (each rank sends to one neighbour and receives from the other).
+    count.left += leaving.size();
+    std::vector<Parcel> arrived;
+    const auto swap_with = [&](int to, int from, const Parcel& out, int tag) {
+      if (to < 0 && from < 0) return;
+      arrived.push_back(Parcel::from(ranks.comm->exchange(out.bytes(), to, from, tag)));
+    };
+    swap_with(lower_rank, upper_rank, parcel[0], tag);
+    if (upper_rank != lower_rank) swap_with(upper_rank, lower_rank, parcel[1], tag + 2);
+    tag += 4;
 
-  // Leavers go (the order keeps the others in place), arrivals are appended.
-  const std::size_t stay = order.size();
-  order.insert(order.end(), leaving.begin(), leaving.end());
-  p.permute_owned(order);
-  p.owned = stay;
-  p.resize(stay);
-  for (const Parcel& in : arrived) {
-    for (const ParticleRow& r : in.particles) {
-      const std::size_t i = p.owned;
-      p.resize(i + 1);
-      p.owned = i + 1;
-      put_row(p, i, r);
-      owned_after[r.gid] = 1;
-      ++count.arrived;
+    // Leavers go (the order keeps the others in place), arrivals are appended.
+    const std::size_t stay = order.size();
+    order.insert(order.end(), leaving.begin(), leaving.end());
+    p.permute_owned(order);
+    p.owned = stay;
+    p.resize(stay);
+    for (const Parcel& in : arrived) {
+      for (const ParticleRow& r : in.particles) {
+        const std::size_t i = p.owned;
+        p.resize(i + 1);
+        p.owned = i + 1;
+        put_row(p, i, r);
+        owned[r.gid] = 1;
+        ++count.arrived;
+      }
+      records.insert(records.end(), in.records.begin(), in.records.end());
+      record_points.insert(record_points.end(), in.record_points.begin(), in.record_points.end());
+      wall_memories.insert(wall_memories.end(), in.wall_records.begin(), in.wall_records.end());
+      if (wall_points) wall_points->insert(wall_points->end(), in.wall_points.begin(), in.wall_points.end());
     }
-    kept.insert(kept.end(), in.records.begin(), in.records.end());
-    kept_points.insert(kept_points.end(), in.record_points.begin(), in.record_points.end());
-    wall_memories.insert(wall_memories.end(), in.wall_records.begin(), in.wall_records.end());
-    if (wall_points) wall_points->insert(wall_points->end(), in.wall_points.begin(), in.wall_points.end());
   }
 
   // Every record keyed by a particle this rank owns (seen from it; memories change sign when
   // seen from the other body), the others dropped; then grouped by key as carry() makes them.
   std::size_t n = 0;
-  for (std::size_t k = 0; k < kept.size(); ++k) {
-    CarriedRecord& r = kept[k];
-    if (!owned_after[r.a]) {
-      if (!owned_after[r.b]) continue;
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    CarriedRecord& r = records[k];
+    if (!owned[r.a]) {
+      if (!owned[r.b]) continue;
       r = {r.b, r.a, -1.0 * r.spring, -1.0 * r.normal_prev, -1.0 * r.rolling};
-      if (with_points) reverse_points(kept_points[k]);
+      if (with_points) reverse_points(record_points[k]);
     }
-    if (with_points && n != k) kept_points[n] = std::move(kept_points[k]);
-    kept[n++] = r;
+    if (with_points && n != k) record_points[n] = std::move(record_points[k]);
+    records[n++] = r;
   }
-  kept.resize(n);
-  if (with_points) kept_points.resize(n);
-  group_records(kept, gid_limit, layout, carried, with_points ? &kept_points : nullptr);
+  records.resize(n);
+  if (with_points) record_points.resize(n);
+  group_records(records, gid_limit, layout, carried, with_points ? &record_points : nullptr);
   return count;
 }
 

@@ -9,12 +9,12 @@
 namespace talus {
 
 int SlabDecomposition::lower() const {
-  if (rank() > 0) return rank() - 1;
-  return periodic ? ranks() - 1 : -1;
+  if (index > 0) return index - 1;
+  return periodic ? slabs() - 1 : -1;
 }
 
 int SlabDecomposition::upper() const {
-  if (rank() + 1 < ranks()) return rank() + 1;
+  if (index + 1 < slabs()) return index + 1;
   return periodic ? 0 : -1;
 }
 
@@ -23,9 +23,14 @@ int SlabDecomposition::owner_of(double x) const {
   return static_cast<int>(it - (cut.begin() + 1));
 }
 
-SlabDecomposition SlabDecomposition::balanced(const Communicator& comm, const Domain& domain, int axis,
+SlabDecomposition SlabDecomposition::whole(const Domain& domain, int axis) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const bool periodic = domain.periodic[axis];
+  return with_cuts(domain, axis, {periodic ? domain.lo[axis] : -kInf, periodic ? domain.hi[axis] : kInf}, 0.0);
+}
+
+SlabDecomposition SlabDecomposition::balanced(const Domain& domain, int axis, int ranks,
                                               std::vector<double> coordinate, double min_width) {
-  const int ranks = comm.size();
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const bool periodic = domain.periodic[axis];
   const double lo = periodic ? domain.lo[axis] : -kInf, hi = periodic ? domain.hi[axis] : kInf;
@@ -41,24 +46,21 @@ SlabDecomposition SlabDecomposition::balanced(const Communicator& comm, const Do
   // A slab narrower than the interaction range would need ghosts from beyond its neighbour.
   for (int r = 1; r < ranks; ++r) cut[r] = std::max(cut[r], cut[r - 1] + min_width);
   for (int r = ranks - 1; r >= 1; --r) cut[r] = std::min(cut[r], cut[r + 1] - min_width);
-  SlabDecomposition d = with_cuts(comm, domain, axis, std::move(cut), min_width);
-  d.rebalance = true;
+  SlabDecomposition d = with_cuts(domain, axis, std::move(cut), min_width);
+  d.rebalance = ranks > 1;
   return d;
 }
 
-SlabDecomposition SlabDecomposition::with_cuts(const Communicator& comm, const Domain& domain, int axis,
-                                               std::vector<double> cut, double min_width) {
+SlabDecomposition SlabDecomposition::with_cuts(const Domain& domain, int axis, std::vector<double> cut,
+                                               double min_width) {
   SlabDecomposition d;
-  d.comm = &comm;
   d.axis = axis;
   d.periodic = domain.periodic[axis];
   d.length = domain.length(axis);
   d.cut = std::move(cut);
   d.min_width = min_width;
-  const int ranks = comm.size();
-  if (d.ranks() != ranks)
-    throw std::runtime_error(std::to_string(d.cut.size()) + " cuts for " + std::to_string(ranks) +
-                             " ranks: give one more cut than ranks");
+  const int ranks = d.slabs();
+  if (ranks < 1) throw std::runtime_error("a slab needs two cuts");
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const double lo = d.periodic ? domain.lo[axis] : -kInf, hi = d.periodic ? domain.hi[axis] : kInf;
   if (d.cut.front() != lo || d.cut.back() != hi)
@@ -71,20 +73,21 @@ SlabDecomposition SlabDecomposition::with_cuts(const Communicator& comm, const D
   return d;
 }
 
-bool SlabDecomposition::rebalance_by_count(const std::vector<double>& coordinate, double tolerance) {
-  const int n_ranks = ranks();
+bool SlabDecomposition::rebalance_by_count(const Communicator& comm, const std::vector<double>& coordinate,
+                                           double tolerance) {
+  const int n_ranks = slabs();
   if (!rebalance || n_ranks < 2) return false;
   const double owned = static_cast<double>(coordinate.size());
-  const double total = comm->sum(owned);
-  if (!(comm->max(owned) > tolerance * total / n_ranks)) return false;
+  const double total = comm.sum(owned);
+  if (!(comm.max(owned) > tolerance * total / comm.size())) return false;
   // A histogram of all particles along the axis, the same on every rank (sums of whole
   // numbers are exact), and cuts at its quantiles.
   double lo = cut.front(), hi = cut.back();
   if (!periodic) {
     double mn = std::numeric_limits<double>::infinity(), mx = -mn;
     for (const double x : coordinate) mn = std::min(mn, x), mx = std::max(mx, x);
-    lo = -comm->max(-mn);
-    hi = comm->max(mx);
+    lo = -comm.max(-mn);
+    hi = comm.max(mx);
   }
   if (!(hi > lo)) return false;
   constexpr int kBins = 4096;
@@ -92,7 +95,7 @@ bool SlabDecomposition::rebalance_by_count(const std::vector<double>& coordinate
   const double width = (hi - lo) / kBins;
   for (const double x : coordinate)
     histogram[std::clamp(static_cast<int>((x - lo) / width), 0, kBins - 1)] += 1;
-  comm->sum_in_place(histogram);
+  comm.sum_in_place(histogram);
   std::vector<double> next = cut;
   double below = 0;
   int bin = 0;

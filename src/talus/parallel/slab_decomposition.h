@@ -1,10 +1,7 @@
 #pragma once
-// A run spread over ranks as slabs along one axis: rank r owns the particles whose coordinate
-// along `axis` lies in [cut[r], cut[r + 1]). The axis is the pair list's slab axis in every
-// rank's grid, so that the ghosts from the rank above fill the one layer of cells above the
-// sub-domain, where rows always list them (pair_list.h): each pair across a cut is computed
-// once, by the lower rank, and its force on the ghost goes back to the owner (the half-shell
-// scheme of LAMMPS's newton on).
+// One axis of a grid of ranks (rank_grid.h), cut into slabs: the ranks whose slab index along
+// `axis` is s own the particles whose coordinate lies in [cut[s], cut[s + 1]). An axis that
+// is not cut has one slab from end to end.
 #include <vector>
 
 #include "talus/parallel/communicator.h"
@@ -13,38 +10,39 @@
 namespace talus {
 
 struct SlabDecomposition {
-  const Communicator* comm = nullptr;
   int axis = 0;
-  std::vector<double> cut;  ///< m, size() + 1 values; -inf and +inf at the ends of a non-periodic axis
-  bool periodic = false;    ///< the axis is periodic: rank 0's lower neighbour is the last rank
-  double length = 0;        ///< m, the box's length along a periodic axis
-  double min_width = 0;     ///< m, the interaction range: no slab is narrower
-  bool rebalance = false;   ///< the cuts follow the particles (rebalance_by_count)
+  std::vector<double> cut = {0, 0};  ///< m, slabs() + 1 values; -inf and +inf at the ends of a non-periodic axis
+  int index = 0;             ///< this rank's slab
+  bool periodic = false;     ///< the axis is periodic: slab 0's lower neighbour is the last slab
+  double length = 0;         ///< m, the box's length along a periodic axis
+  double min_width = 0;      ///< m, the interaction range: no slab is narrower
+  bool rebalance = false;    ///< the cuts follow the particles (rebalance_by_count)
 
-  int ranks() const { return static_cast<int>(cut.size()) - 1; }
-  int rank() const { return comm->rank(); }
-  double lo() const { return cut[rank()]; }
-  double hi() const { return cut[rank() + 1]; }
-  // Neighbour ranks below and above (-1: none, at the ends of a non-periodic axis).
+  int slabs() const { return static_cast<int>(cut.size()) - 1; }
+  bool split() const { return slabs() > 1; }
+  double lo() const { return cut[index]; }
+  double hi() const { return cut[index + 1]; }
+  // Neighbour slabs below and above (-1: none, at the ends of a non-periodic axis).
   int lower() const;
   int upper() const;
-  int owner_of(double x) const;  ///< the rank whose slab holds coordinate x (wrapped)
+  int owner_of(double x) const;  ///< the slab that holds coordinate x (wrapped)
 
-  // Cuts that give every rank the same number of the particles at `coordinate` (the whole
-  // system, known to every rank at the start), each slab at least `min_width` wide; they
-  // follow the particles later (rebalance = true).
-  static SlabDecomposition balanced(const Communicator& comm, const Domain& domain, int axis,
-                                    std::vector<double> coordinate, double min_width);
-  // The slabs [cut[r], cut[r + 1]) given, one per rank: ascending, at least `min_width` wide,
-  // from face to face of a periodic axis (from -inf to +inf along another). They stay.
-  static SlabDecomposition with_cuts(const Communicator& comm, const Domain& domain, int axis,
-                                     std::vector<double> cut, double min_width);
+  // One slab from end to end.
+  static SlabDecomposition whole(const Domain& domain, int axis);
+  // `slabs` slabs with the same number of the particles at `coordinate` (the whole system,
+  // known to every rank at the start), each at least `min_width` wide; they follow the
+  // particles later (rebalance = true).
+  static SlabDecomposition balanced(const Domain& domain, int axis, int slabs, std::vector<double> coordinate,
+                                    double min_width);
+  // The slabs [cut[s], cut[s + 1]) given: ascending, at least `min_width` wide, from face to
+  // face of a periodic axis (from -inf to +inf along another). They stay.
+  static SlabDecomposition with_cuts(const Domain& domain, int axis, std::vector<double> cut, double min_width);
 
   // Moves the cuts towards equal particle counts when the fullest rank holds more than
-  // `tolerance` times the mean (collective; `coordinate` of this rank's particles). Each cut
-  // stays strictly between its neighbours' old places, so a particle changes rank by one slab
-  // at most (migrate), and repeated rebuilds converge. Returns whether the cuts moved.
-  bool rebalance_by_count(const std::vector<double>& coordinate, double tolerance = 1.1);
+  // `tolerance` times the mean (collective over `comm`; `coordinate` of this rank's particles).
+  // Each cut stays strictly between its neighbours' old places, so a particle changes slab by
+  // one at most (migrate), and repeated rebuilds converge. Returns whether the cuts moved.
+  bool rebalance_by_count(const Communicator& comm, const std::vector<double>& coordinate, double tolerance = 1.1);
 };
 
 }  // namespace talus

@@ -84,7 +84,7 @@ class Progress {
     // others to join at times only this process's clock decides.
     if (w.distributed())
       std::fprintf(stderr, "%st = %.6g s (%5.1f %%)  %.0f steps/s  %zu particles on rank 0 of %d  ETA %.0f s%s",
-                   tty_ ? "\r" : "", w.time(), 100 * fraction, rate, w.owned_count(), w.slabs().ranks(), eta,
+                   tty_ ? "\r" : "", w.time(), 100 * fraction, rate, w.owned_count(), w.communicator().size(), eta,
                    tty_ ? "   " : "\n");
     else
       std::fprintf(stderr, "%st = %.6g s (%5.1f %%)  %.0f steps/s  %zu particles  %zu contacts  ETA %.0f s%s",
@@ -202,7 +202,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
     loop.next_output = world.time() + run.output_interval;
     loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
-  if (spread && !world.distributed()) world.distribute(comm, run.slab_axis);  // a restart on the same ranks is spread already
+  if (spread && !world.distributed()) world.distribute(comm, run.processors);  // a restart on the same ranks is spread already
   const std::uint64_t first_step = world.step_count();
   const double dt = world.settings().time_step;
   // Steps run in batches (World::run closes one step and opens the next in one pass over
@@ -294,7 +294,9 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   summary["neighbour_rebuilds"] = world.rebuilds();
   if (spread) {
     summary["particles_moved_between_ranks"] = comm.sum(static_cast<double>(world.particles_moved_between_ranks()));
-    summary["slab_axis"] = std::string(1, "xyz"[world.slabs().axis]);
+    const RankGrid& grid = world.rank_grid();
+    summary["slab_axis"] = std::string(1, "xyz"[grid.slab_axis]);
+    summary["processors"] = grid.counts();
   }
   // Where the wall time of rank 0 went, by phase of the step (s); the rest is output,
   // analyses and the run loop.

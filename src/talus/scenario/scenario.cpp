@@ -204,25 +204,21 @@ void read_walls(const ScenarioFile& f, World& world, std::vector<std::string>& m
   }
 }
 
-// run.processors = [px, py, pz]: the ranks of a run under mpirun along each axis. Sub-domains
-// are slabs, so all but one count must be 1; that axis is returned. The product must be the
-// number of ranks (checked under mpirun only: on one rank the key has nothing to split).
-int read_processors(const ScenarioFile& f, int ranks) {
+// run.processors = [px, py, pz]: the ranks of a run under mpirun along each axis, whole numbers
+// whose product is the number of ranks (checked under mpirun only: on one rank the key has
+// nothing to split).
+RankCounts read_processors(const ScenarioFile& f, int ranks) {
   const Vec3 p = f.get<Vec3>("run.processors", io::positive);
-  int axis = -1, product = 1;
+  RankCounts counts{};
+  int product = 1;
   for (int a = 0; a < 3; ++a) {
-    if (p[a] != std::floor(p[a])) f.fail("run.processors", "counts of ranks must be whole numbers");
-    if (p[a] > 1) {
-      if (axis >= 0)
-        f.fail("run.processors", "sub-domains are slabs along one axis: give ranks along one axis only, e.g. [1, 1, " +
-                                     std::to_string(ranks) + "]");
-      axis = a;
-    }
-    product *= static_cast<int>(p[a]);
+    if (p[a] != std::floor(p[a]) || p[a] > 1e6) f.fail("run.processors", "counts of ranks must be whole numbers");
+    counts[a] = static_cast<int>(p[a]);
+    product *= counts[a];
   }
   if (ranks > 1 && product != ranks)
     f.fail("run.processors", std::to_string(product) + " sub-domains for " + std::to_string(ranks) + " ranks (mpirun -n)");
-  return axis;
+  return counts;
 }
 
 }  // namespace
@@ -241,7 +237,7 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
   run.checkpoint_interval = f.get_or<double>("run.checkpoint_interval", 0.0, io::non_negative);
   run.checkpoint_keep = static_cast<std::size_t>(f.get_or<std::int64_t>("run.checkpoint_keep", 3, io::positive));
   const double steps_per_contact = f.get_or<double>("run.steps_per_contact", 50, io::in_range(10, 1e9));
-  if (f.has("run.processors")) run.slab_axis = read_processors(f, Communicator::world().size());
+  if (f.has("run.processors")) run.processors = read_processors(f, Communicator::world().size());
 
   WorldSettings ws;
   ws.tangential_model = read_tangential_model(f);

@@ -2,6 +2,7 @@
 // A scenario file turned into a ready World plus what the run loop needs to know.
 #include <cstdint>
 #include <memory>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,9 +28,8 @@ struct RunControl {
   std::size_t checkpoint_keep = 3;           ///< checkpoints kept in DIR/checkpoints/
   std::uint64_t seed = 1;
   LeavePolicy on_leave = LeavePolicy::error; ///< domain.on_leave: particles leaving a non-periodic face
-  // Under mpirun, the axis the slabs of the run's ranks are cut along (run.processors names the
-  // ranks per axis); -1: the most even one.
-  int slab_axis = -1;
+  // Under mpirun, the ranks along x, y and z (run.processors); zeros: chosen (RankGrid::choose_counts).
+  RankCounts processors{0, 0, 0};
 };
 
 struct Scenario {

@@ -38,9 +38,9 @@ void World::rebuild() {
   }
 
   const double range = interaction_range();
-  // Along the axis of a distributed world's slabs, the halo is the periodic image.
+  // Along the cut axes of a distributed world, the halo makes the periodic images.
   Domain image_domain = domain;
-  if (distributed()) image_domain.periodic[spread_.slabs.axis] = false;
+  for (const int a : spread_.ranks.stage_axes()) image_domain.periodic[a] = false;
   for (int a = 0; a < 3; ++a)
     if (image_domain.periodic[a] && domain.length(a) < 2 * range)
       throw std::runtime_error("periodic box narrower than twice the interaction range");
@@ -65,15 +65,13 @@ void World::rebuild() {
       wall_points.resize(wall_entries.size());
       for (std::size_t k = 0; k < wall_entries.size(); ++k) wall_points[k] = shaped_.wall_points.list_of(wall_entries[k]);
     }
-    std::vector<double> coordinate(p.owned);
-    for (std::size_t i = 0; i < p.owned; ++i) coordinate[i] = p.position[i][spread_.slabs.axis];
-    spread_.slabs.rebalance_by_count(coordinate);
-    spread_.migrated += migrate(p, spread_.slabs, carried, wall_memories, memory_layout(), next_gid_,
+    spread_.ranks.rebalance_by_count(std::vector<Vec3>(p.position.begin(), p.position.begin() + p.owned));
+    spread_.migrated += migrate(p, spread_.ranks, carried, wall_memories, memory_layout(), next_gid_,
                          points_travel ? &wall_points : nullptr).left;
   }
   const long owned = static_cast<long>(p.owned);
-  lists_.grid.setup(distributed() ? slab_grid_domain() : domain, p.position, p.owned, range,
-              distributed() ? spread_.slabs.axis : -1);
+  lists_.grid.setup(distributed() ? sub_domain_grid() : domain, p.position, p.owned, range,
+                    distributed() ? spread_.ranks.slab_axis : -1);
 
   // Sort owned particles by cell, slab axis slowest: slabs become contiguous and neighbours
   // close in memory. A stable counting sort; the cells are recomputed after the sort rather
@@ -127,7 +125,7 @@ void World::rebuild() {
   lists_.ghosts.create(p, image_domain, lists_.grid, range, cell_of);
   if (distributed()) {
     ScopedPhase exchange(timer_, Phase::exchange);
-    spread_.halo.create(p, spread_.slabs, lists_.grid, range, cell_of);
+    spread_.halo.create(p, spread_.ranks, lists_.grid, range, cell_of);
   }
   lists_.grid.bin(cell_of);
 
@@ -192,9 +190,10 @@ void World::mark_step_ends() {
 #pragma omp for schedule(static)
     for (long k = 0; k < owners; ++k) ends_.kind[lists_.ghosts.owner_at(k)] = StepEndKind::late;
   }
-  // Particles with copies on the rank below wait for their forces from there.
+  // Particles with copies on other ranks wait for their forces from there (copies of copies
+  // from a neighbour are that neighbour's to wait for).
   for (const std::uint32_t k : spread_.halo.sent_indices())
-    ends_.kind[k < owned ? k : lists_.ghosts.owner(k - owned)] = StepEndKind::late;
+    if (k < owned + lists_.ghosts.count()) ends_.kind[k < owned ? k : lists_.ghosts.owner(k - owned)] = StepEndKind::late;
   for (std::size_t i = 0; i < owned; ++i)
     if (ends_.kind[i] == StepEndKind::late) ends_.late.push_back(static_cast<std::uint32_t>(i));
 
@@ -222,23 +221,31 @@ void World::mark_step_ends() {
     ends_.late_owners_in_first_slab &= lists_.pairs.slabs() > 0 && lists_.ghosts.owner_at(k) < lists_.pairs.slab_end(0);
 }
 
-Domain World::slab_grid_domain() const {
-  // The slab, as if periodic: the grid tiles it and keeps a layer above for the halo. An end
-  // of a non-periodic axis is where the outermost particle is.
+Domain World::sub_domain_grid() const {
+  // The box, as if periodic along its cut axes: the grid tiles it and keeps a layer on each
+  // side for the halo. An end of a non-periodic axis is where the outermost particle is; along
+  // the slab axis, of all ranks when other axes are cut too, so that the ranks of one slab cut
+  // it into the same layers (which order the pairs across their cuts, pair_list.h).
   Domain d = settings_.domain;
-  const int a = spread_.slabs.axis;
+  const RankGrid& ranks = spread_.ranks;
   const ParticleStore& p = particles_;
-  double lo = spread_.slabs.lo(), hi = spread_.slabs.hi();
-  if (!std::isfinite(lo) || !std::isfinite(hi)) {
+  for (const int a : ranks.stage_axes()) {
+    double lo = ranks.axes[a].lo(), hi = ranks.axes[a].hi();
     double mn = std::numeric_limits<double>::infinity(), mx = -mn;
     for (std::size_t i = 0; i < p.owned; ++i) mn = std::min(mn, p.position[i][a]), mx = std::max(mx, p.position[i][a]);
-    if (!std::isfinite(lo)) lo = std::isfinite(mn) ? mn : (std::isfinite(hi) ? hi - 1 : 0.0);
-    if (!std::isfinite(hi)) hi = std::isfinite(mx) ? std::max(mx, lo) : lo + 1;
-    if (!(hi > lo)) hi = lo + 1e-9 * std::max(1.0, std::abs(lo));
+    if (a == ranks.slab_axis && ranks.stage_axes().size() > 1) {
+      mn = -ranks.comm->max(-mn);
+      mx = ranks.comm->max(mx);
+    }
+    if (!std::isfinite(lo) || !std::isfinite(hi)) {
+      if (!std::isfinite(lo)) lo = std::isfinite(mn) ? mn : (std::isfinite(hi) ? hi - 1 : 0.0);
+      if (!std::isfinite(hi)) hi = std::isfinite(mx) ? std::max(mx, lo) : lo + 1;
+      if (!(hi > lo)) hi = lo + 1e-9 * std::max(1.0, std::abs(lo));
+    }
+    d.lo[a] = lo;
+    d.hi[a] = hi;
+    d.periodic[a] = true;
   }
-  d.lo[a] = lo;
-  d.hi[a] = hi;
-  d.periodic[a] = true;
   return d;
 }
 

@@ -85,7 +85,7 @@ double World::interaction_range() const {
 }
 
 const Communicator& World::communicator() const {
-  return distributed() ? *spread_.slabs.comm : Communicator::alone();
+  return distributed() ? *spread_.ranks.comm : Communicator::alone();
 }
 
 MemoryLayout World::memory_layout() const {

@@ -145,16 +145,16 @@ class World {
   // Owned index of each global id (-1 if absent); valid until the next rebuild.
   std::vector<std::int32_t> index_of_gid() const;
 
-  // Spreads the world over the ranks of `comm` as slabs along `axis`, or when it is -1 along
-  // the axis one rank's pair list would sort its slabs along (slab_decomposition.h), each rank
-  // keeping the particles of its slab. Every rank must hold the same whole system when it calls
-  // this. One rank along a periodic axis exchanges with itself (the periodic images along that
-  // axis are its halo), which tests the exchange alone.
-  void distribute(const Communicator& comm, int axis = -1);
-  // The same with the slabs given (each at least an interaction range wide).
-  void distribute(const SlabDecomposition& slabs);
-  bool distributed() const { return spread_.slabs.comm != nullptr; }
-  const SlabDecomposition& slabs() const { return spread_.slabs; }
+  // Spreads the world over the ranks of `comm` on a grid of `counts` ranks along x, y and z
+  // (rank_grid.h; zeros: RankGrid::choose_counts picks them), each rank keeping the particles
+  // of its box; `slab_axis`, a cut axis, is the pair list's (-1: the one its slabs would hold
+  // most evenly, if cut). Every rank must hold the same whole system when it calls this. One
+  // rank along a periodic axis makes its own images there.
+  void distribute(const Communicator& comm, RankCounts counts = {0, 0, 0}, int slab_axis = -1);
+  // The same with the cuts given (each slab at least an interaction range wide).
+  void distribute(const RankGrid& ranks);
+  bool distributed() const { return spread_.ranks.comm != nullptr; }
+  const RankGrid& rank_grid() const { return spread_.ranks; }
   const HaloExchange& halo() const { return spread_.halo; }
   const Communicator& communicator() const;  ///< the ranks of a distributed world, else one rank
   std::uint64_t particles_moved_between_ranks() const { return spread_.migrated; }
@@ -215,7 +215,7 @@ class World {
   std::size_t integration_cost() const;  ///< per particle, in sphere updates (velocity_verlet.h)
   double interaction_range() const;
   double particle_skin(double largest_radius) const;  ///< m, the list's skin
-  Domain slab_grid_domain() const;        ///< what this rank's grid covers in a distributed world
+  Domain sub_domain_grid() const;         ///< what this rank's grid covers in a distributed world
   Diagnostics local_diagnostics() const;  ///< of this rank's particles and the pairs it lists
   // How a snapshot of this rank names the partners of its contacts: by record (one rank), by
   // global id (a piece that gather_snapshot joins), or by record with the ghosts from the rank
@@ -235,7 +235,7 @@ class World {
   std::vector<CompositeShape> shapes_ = std::vector<CompositeShape>(1);
   NeighborLists lists_;     ///< cells, pair and wall lists with their memories, periodic images
   ShapedContacts shaped_;   ///< contact points and scratch of rigid bodies of several parts
-  SpreadOverRanks spread_;  ///< this rank's slab and halo (slabs.comm == nullptr: not distributed)
+  SpreadOverRanks spread_;  ///< this rank's box and halo (ranks.comm == nullptr: not distributed)
   StepEndPlan ends_;        ///< how each particle's step ends in the force pass (sphere worlds)
   double time_ = 0;
   std::uint64_t steps_ = 0;

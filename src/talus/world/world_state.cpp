@@ -158,10 +158,11 @@ WorldState World::capture_state() {
   s.wall_entry_force = lists_.walls.force_on_wall;
   s.wall_sub = shaped_.wall_points.lists();
   if (distributed()) {
-    s.layout.axis = spread_.slabs.axis;
-    s.layout.rebalance = spread_.slabs.rebalance;
-    s.layout.min_width = spread_.slabs.min_width;
-    s.layout.cut = spread_.slabs.cut;
+    const RankGrid& grid = spread_.ranks;
+    s.layout.axis = grid.slab_axis;
+    s.layout.rebalance = grid.axes[grid.slab_axis].rebalance;
+    s.layout.min_width = grid.axes[grid.slab_axis].min_width;
+    for (const int a : grid.stage_axes()) s.layout.cut[a] = grid.axes[a].cut;
     join_pieces(s, communicator());
   }
   return s;
@@ -205,8 +206,10 @@ WorldState share_of_rank(const WorldState& s, int r) {
 }  // namespace
 
 bool WorldState::fits_ranks(std::uint64_t n) const {
-  return n == ranks && n > 1 && layout.cut.size() == n + 1 && layout.particles.size() == n &&
-         layout.pair_entries.size() == n && layout.wall_entries.size() == n;
+  std::uint64_t grid = 1;
+  for (const std::vector<double>& cut : layout.cut) grid *= std::max<std::size_t>(2, cut.size()) - 1;
+  return n == ranks && n > 1 && grid == n && layout.particles.size() == n && layout.pair_entries.size() == n &&
+         layout.wall_entries.size() == n;
 }
 
 void World::restore_state(const WorldState& s, const Communicator* ranks) {
@@ -220,10 +223,10 @@ void World::restore_state(const WorldState& s, const Communicator* ranks) {
   require(!distributed(), "a distributed world is restored before it is spread over the ranks");
   if (ranks && s.fits_ranks(static_cast<std::uint64_t>(ranks->size()))) {
     const WorldState::RankLayout& l = s.layout;
-    spread_.slabs = SlabDecomposition::with_cuts(*ranks, settings_.domain, l.axis, l.cut, l.min_width);
-    spread_.slabs.rebalance = false;  // the replayed build keeps the cuts it made
+    spread_.ranks = RankGrid::with_cuts(*ranks, settings_.domain, l.cut, l.min_width, l.axis);
+    for (SlabDecomposition& axis : spread_.ranks.axes) axis.rebalance = false;  // the replayed build keeps its cuts
     replay_last_build(share_of_rank(s, ranks->rank()));
-    spread_.slabs.rebalance = l.rebalance;
+    for (const int a : spread_.ranks.stage_axes()) spread_.ranks.axes[a].rebalance = l.rebalance;
     return;
   }
   if (s.ranks > 1) {

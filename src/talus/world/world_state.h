@@ -9,6 +9,7 @@
 // the per-particle constants, so the restored World holds the same lists, entry for entry, and
 // sums forces in the same order as the World that never stopped. The contact memories are then
 // put back entry by entry; each entry's global ids are stored to check that the lists match.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -30,15 +31,15 @@ struct WorldState {
   // ranks, each rank takes its share back (`layout`) and replays its last build: bit for bit.
   std::uint64_t ranks = 1;
   struct RankLayout {
-    int axis = 0;               ///< the slabs' axis
-    bool rebalance = false;     ///< the cuts follow the particles
-    double min_width = 0;       ///< m, no slab narrower
-    std::vector<double> cut;    ///< m, ranks + 1 values, those of the last build
+    int axis = 0;                ///< the pair list's slab axis, a cut one
+    bool rebalance = false;      ///< the cuts follow the particles
+    double min_width = 0;        ///< m, no slab narrower
+    std::array<std::vector<double>, 3> cut;  ///< m, per axis those of the last build; empty along an uncut axis
     // Each rank's share of the joined arrays: particles (and position_at_build), particle-pair
     // entries, particle-wall entries.
     std::vector<std::uint64_t> particles, pair_entries, wall_entries;
   };
-  RankLayout layout;  ///< empty (no cuts) for one rank and in files that predate it
+  RankLayout layout;  ///< no cuts for one rank and in files that predate it
   bool fits_ranks(std::uint64_t n) const;  ///< gathered from n > 1 ranks, with their layout
   std::uint32_t next_gid = 0;
   double time = 0;                  ///< s
