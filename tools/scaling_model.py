@@ -6,11 +6,14 @@ machine (talus-bench, talus-comm-bench). Prints the table of docs/scaling.md.
 usage: scaling_model.py [--particle-us 0.16] [--ghost-us 0.10] [--latency-us 2.0]
                         [--cross-us 3.0] [--cross-ghost-us 0.13]
 
-A rank owns a cube of side L (in bounding diameters d) of number density n; its halo is the
-shell of thickness r_g = 1.15 d (the largest diameter plus the 15 % skin) around it, as in
-LAMMPS' full ghost shell with Newton's third law across ranks (forward positions, reverse
-forces). Per step: n L^3 particles at t_p each, n ((L + 2 r_g)^3 - L^3) ghosts at t_g each
-(pack, send, unpack, forward and reverse), and 12 messages (6 swaps each way) at the latency.
+A rank owns a cube of side L (in bounding diameters d) of number density n on a 3-D grid of
+ranks; its halo is the shell of thickness r_g = 1.15 d (the largest diameter plus the 15 % skin)
+around it on both sides along two axes and on the upper side only along the pair list's slab
+axis (the half shell of Talus's staged halo, rank_grid.h), with Newton's third law across ranks
+(forward positions, reverse forces). Per step: n L^3 particles at t_p each,
+n ((L + 2 r_g)^2 (L + r_g) - L^3) ghosts at t_g each (pack, send, unpack, forward and reverse),
+and 10 messages (5 passes each way: two along each of two axes, one along the slab axis) at
+the latency.
 """
 import argparse
 
@@ -21,10 +24,10 @@ def rank_cube(particles, ranks, density):
     """Side L (d) of one rank's cube and its halo fraction (ghosts per owned particle)."""
     local = particles / ranks
     side = (local / density) ** (1.0 / 3.0)
-    return side, (1.0 + 2.0 * R_GHOST / side) ** 3 - 1.0
+    return side, (1.0 + 2.0 * R_GHOST / side) ** 2 * (1.0 + R_GHOST / side) - 1.0
 
 
-def efficiency(particles, ranks, density, particle_us, ghost_us, latency_us, messages=12):
+def efficiency(particles, ranks, density, particle_us, ghost_us, latency_us, messages=10):
     side, halo = rank_cube(particles, ranks, density)
     local = particles / ranks
     work = local * particle_us

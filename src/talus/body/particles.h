@@ -1,7 +1,7 @@
 #pragma once
 // Particle state as structure of arrays. Entries [0, owned) are the particles this rank owns;
 // entries [owned, size) are ghost copies: periodic images, then, in a distributed world, the
-// copies from the rank above (parallel/halo_exchange.h). Ghosts carry their owner's global id.
+// copies from other ranks (parallel/halo_exchange.h). Ghosts carry their owner's global id.
 #include <cstdint>
 #include <vector>
 

@@ -168,7 +168,7 @@ Snapshot World::local_snapshot(PartnerNames names, std::size_t* owned_records) c
   }
   if (owned_records) *owned_records = s.particles.size();
   if (!ready_) return s;
-  // Periodic images are named by their owner; copies from the rank above by their global id,
+  // Periodic images are named by their owner; copies from other ranks by their global id,
   // or by a record of their own appended to the piece.
   std::vector<int> halo_record(names == PartnerNames::kRecordWithGhosts ? p.size() - p.owned - lists_.ghosts.count() : 0, -1);
   const auto record_of_neighbor = [&](std::uint32_t j) {

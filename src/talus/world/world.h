@@ -135,7 +135,7 @@ class World {
   // of a distributed world.
   Snapshot snapshot() const;
   // This rank's part of the system, for output written piece by piece (.pvtu): its particles in
-  // global id order, then the copies from the rank above that its contacts reach (so that each
+  // global id order, then the copies from other ranks that its contacts reach (so that each
   // contact line has both ends), contacts of the pairs it lists, named by record in the piece.
   struct SnapshotPiece {
     Snapshot snapshot;
@@ -209,7 +209,7 @@ class World {
                                std::span<const SubContact> previous, std::vector<SubContact>& contacts,
                                double memory_dt);
   bool has_composites() const;
-  // The ghost forces handed back: those of ghosts from the rank above to their owners there,
+  // The ghost forces handed back: those of ghosts from other ranks to their originals there,
   // then those of periodic images to their owners here.
   void fold_ghost_forces();
   std::size_t integration_cost() const;  ///< per particle, in sphere updates (velocity_verlet.h)
