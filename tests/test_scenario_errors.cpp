@@ -101,6 +101,9 @@ TEST(ScenarioErrors, ProcessorsInWholeNumbers) {
   EXPECT_NE(half.find("run.processors: counts of ranks must be whole numbers"), std::string::npos) << half;
   const std::string zero = load_error(kValid, {"run.processors=[0, 1, 1]"});
   EXPECT_NE(zero.find("run.processors"), std::string::npos) << zero;
+  EXPECT_EQ(load_error(kValid, {"run.balance=\"neighbours\""}), "");
+  const std::string timed = load_error(kValid, {"run.balance=\"time\""});
+  EXPECT_NE(timed.find("run.balance"), std::string::npos) << timed;
 }
 
 TEST(ScenarioErrors, WrongType) {

@@ -33,13 +33,13 @@ std::vector<int> RankGrid::stage_axes() const {
   return order;
 }
 
-bool RankGrid::rebalance_by_count(const std::vector<Vec3>& owned_positions, double tolerance) {
+bool RankGrid::rebalance(const std::vector<Vec3>& owned_positions, const std::vector<double>& weight, double tolerance) {
   bool moved = false;
   std::vector<double> coordinate(owned_positions.size());
   for (int a = 0; a < 3; ++a) {
     if (!axes[a].split() || !axes[a].rebalance) continue;
     for (std::size_t i = 0; i < owned_positions.size(); ++i) coordinate[i] = owned_positions[i][a];
-    moved |= axes[a].rebalance_by_count(*comm, coordinate, tolerance);
+    moved |= axes[a].move_cuts(*comm, coordinate, weight, tolerance);
   }
   return moved;
 }

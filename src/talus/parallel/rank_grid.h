@@ -33,9 +33,14 @@ struct RankGrid {
   bool owns(const Vec3& wrapped) const;  ///< this rank's box holds the (wrapped) position
   // The cut axes in the order of the halo's stages: the others first, the slab axis last.
   std::vector<int> stage_axes() const;
-  // Moves each cut axis's cuts towards the quantiles of the particles along it when the
-  // fullest rank holds more than `tolerance` times the mean (collective). Returns whether any moved.
-  bool rebalance_by_count(const std::vector<Vec3>& owned_positions, double tolerance = 1.1);
+  // Moves each cut axis's cuts towards the quantiles of the particles' weights along it when
+  // the heaviest rank holds more than `tolerance` times the mean (collective; `weight` one per
+  // owned particle, whole numbers, or empty for counts). Returns whether any moved.
+  bool rebalance(const std::vector<Vec3>& owned_positions, const std::vector<double>& weight, double tolerance = 1.1);
+  // What the cuts balance: particle counts, or the work of each particle's contacts (1 plus
+  // the pair and wall entries its rows hold, LAMMPS's "weight neigh").
+  enum class Balance { count, neighbours };
+  Balance balance = Balance::count;
 
   // Cuts at the particles' quantiles along each axis (every rank passes the whole system),
   // `counts` ranks along the axes (their product the communicator's size).

@@ -73,15 +73,17 @@ SlabDecomposition SlabDecomposition::with_cuts(const Domain& domain, int axis, s
   return d;
 }
 
-bool SlabDecomposition::rebalance_by_count(const Communicator& comm, const std::vector<double>& coordinate,
-                                           double tolerance) {
+bool SlabDecomposition::move_cuts(const Communicator& comm, const std::vector<double>& coordinate,
+                                  const std::vector<double>& weight, double tolerance) {
   const int n_ranks = slabs();
   if (!rebalance || n_ranks < 2) return false;
-  const double owned = static_cast<double>(coordinate.size());
+  const auto weight_of = [&](std::size_t i) { return weight.empty() ? 1.0 : weight[i]; };
+  double owned = 0;
+  for (std::size_t i = 0; i < coordinate.size(); ++i) owned += weight_of(i);
   const double total = comm.sum(owned);
   if (!(comm.max(owned) > tolerance * total / comm.size())) return false;
-  // A histogram of all particles along the axis, the same on every rank (sums of whole
-  // numbers are exact), and cuts at its quantiles.
+  // A histogram of all particles' weights along the axis, the same on every rank (weights are
+  // whole numbers, whose sums are exact), and cuts at its quantiles.
   double lo = cut.front(), hi = cut.back();
   if (!periodic) {
     double mn = std::numeric_limits<double>::infinity(), mx = -mn;
@@ -93,8 +95,8 @@ bool SlabDecomposition::rebalance_by_count(const Communicator& comm, const std::
   constexpr int kBins = 4096;
   std::vector<double> histogram(kBins, 0.0);
   const double width = (hi - lo) / kBins;
-  for (const double x : coordinate)
-    histogram[std::clamp(static_cast<int>((x - lo) / width), 0, kBins - 1)] += 1;
+  for (std::size_t i = 0; i < coordinate.size(); ++i)
+    histogram[std::clamp(static_cast<int>((coordinate[i] - lo) / width), 0, kBins - 1)] += weight_of(i);
   comm.sum_in_place(histogram);
   std::vector<double> next = cut;
   double below = 0;

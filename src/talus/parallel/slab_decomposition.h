@@ -16,7 +16,7 @@ struct SlabDecomposition {
   bool periodic = false;     ///< the axis is periodic: slab 0's lower neighbour is the last slab
   double length = 0;         ///< m, the box's length along a periodic axis
   double min_width = 0;      ///< m, the interaction range: no slab is narrower
-  bool rebalance = false;    ///< the cuts follow the particles (rebalance_by_count)
+  bool rebalance = false;    ///< the cuts follow the particles (move_cuts)
 
   int slabs() const { return static_cast<int>(cut.size()) - 1; }
   bool split() const { return slabs() > 1; }
@@ -38,11 +38,13 @@ struct SlabDecomposition {
   // face of a periodic axis (from -inf to +inf along another). They stay.
   static SlabDecomposition with_cuts(const Domain& domain, int axis, std::vector<double> cut, double min_width);
 
-  // Moves the cuts towards equal particle counts when the fullest rank holds more than
-  // `tolerance` times the mean (collective over `comm`; `coordinate` of this rank's particles).
-  // Each cut stays strictly between its neighbours' old places, so a particle changes slab by
-  // one at most (migrate), and repeated rebuilds converge. Returns whether the cuts moved.
-  bool rebalance_by_count(const Communicator& comm, const std::vector<double>& coordinate, double tolerance = 1.1);
+  // Moves the cuts towards equal shares of the particles' weights (`weight`, one per particle,
+  // or empty: each counts 1) when the heaviest rank holds more than `tolerance` times the mean
+  // (collective over `comm`; `coordinate` of this rank's particles). Each cut stays strictly
+  // between its neighbours' old places, so a particle changes slab by one at most (migrate),
+  // and repeated rebuilds converge. Returns whether the cuts moved.
+  bool move_cuts(const Communicator& comm, const std::vector<double>& coordinate, const std::vector<double>& weight,
+                 double tolerance = 1.1);
 };
 
 }  // namespace talus

@@ -203,6 +203,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
     loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
   if (spread && !world.distributed()) world.distribute(comm, run.processors);  // a restart on the same ranks is spread already
+  if (spread) world.balance_ranks_by(run.balance);
   const std::uint64_t first_step = world.step_count();
   const double dt = world.settings().time_step;
   // Steps run in batches (World::run closes one step and opens the next in one pass over
@@ -297,6 +298,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
     const RankGrid& grid = world.rank_grid();
     summary["slab_axis"] = std::string(1, "xyz"[grid.slab_axis]);
     summary["processors"] = grid.counts();
+    summary["balance"] = grid.balance == RankGrid::Balance::count ? "count" : "neighbours";
   }
   // Where the wall time of rank 0 went, by phase of the step (s); the rest is output,
   // analyses and the run loop.

@@ -238,6 +238,8 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
   run.checkpoint_keep = static_cast<std::size_t>(f.get_or<std::int64_t>("run.checkpoint_keep", 3, io::positive));
   const double steps_per_contact = f.get_or<double>("run.steps_per_contact", 50, io::in_range(10, 1e9));
   if (f.has("run.processors")) run.processors = read_processors(f, Communicator::world().size());
+  run.balance = f.get_choice_or("run.balance", "count", {"count", "neighbours"}) == "count" ? RankGrid::Balance::count
+                                                                                         : RankGrid::Balance::neighbours;
 
   WorldSettings ws;
   ws.tangential_model = read_tangential_model(f);

@@ -30,6 +30,7 @@ struct RunControl {
   LeavePolicy on_leave = LeavePolicy::error; ///< domain.on_leave: particles leaving a non-periodic face
   // Under mpirun, the ranks along x, y and z (run.processors); zeros: chosen (RankGrid::choose_counts).
   RankCounts processors{0, 0, 0};
+  RankGrid::Balance balance = RankGrid::Balance::count;  ///< what the cuts balance (run.balance)
 };
 
 struct Scenario {

@@ -47,6 +47,14 @@ void World::rebuild() {
 
   // The memories the new list must find, compact (the entries in contact only), so that the
   // new list is built in the old one's memory: the two never coexist at the peak.
+  std::vector<double> weight;  // of each owned particle, for cuts that balance the contacts' work
+  if (distributed() && spread_.ranks.balance == RankGrid::Balance::neighbours) {
+    weight.assign(p.owned, 1.0);
+    for (std::size_t i = 0; i < std::min(p.owned, lists_.pairs.rows()); ++i)
+      weight[i] += lists_.pairs.row_end(i) - lists_.pairs.row_begin(i);
+    for (std::size_t i = 0; i < std::min(p.owned, lists_.walls.rows()); ++i)
+      weight[i] += lists_.walls.row_end(i) - lists_.walls.row_begin(i);
+  }
   CarriedContacts& carried = lists_.carried;
   lists_.pairs.carry(lists_.gid_at_build, next_gid_, has_composites(), carried);
   lists_.pairs.clear();
@@ -65,7 +73,7 @@ void World::rebuild() {
       wall_points.resize(wall_entries.size());
       for (std::size_t k = 0; k < wall_entries.size(); ++k) wall_points[k] = shaped_.wall_points.list_of(wall_entries[k]);
     }
-    spread_.ranks.rebalance_by_count(std::vector<Vec3>(p.position.begin(), p.position.begin() + p.owned));
+    spread_.ranks.rebalance(std::vector<Vec3>(p.position.begin(), p.position.begin() + p.owned), weight);
     spread_.migrated += migrate(p, spread_.ranks, carried, wall_memories, memory_layout(), next_gid_,
                          points_travel ? &wall_points : nullptr).left;
   }

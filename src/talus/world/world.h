@@ -153,6 +153,7 @@ class World {
   void distribute(const Communicator& comm, RankCounts counts = {0, 0, 0}, int slab_axis = -1);
   // The same with the cuts given (each slab at least an interaction range wide).
   void distribute(const RankGrid& ranks);
+  void balance_ranks_by(RankGrid::Balance balance) { spread_.ranks.balance = balance; }
   bool distributed() const { return spread_.ranks.comm != nullptr; }
   const RankGrid& rank_grid() const { return spread_.ranks; }
   const HaloExchange& halo() const { return spread_.halo; }
