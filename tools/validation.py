@@ -309,6 +309,41 @@ def read_table(path):
     return {k: [float(r[k]) for r in rows] for k in (rows[0] if rows else {})}
 
 
+def force_tail(folders, ax, colour, label):
+    """Fig. 15(b): the mean PDF of F_c/<F_c> before the gate opens over the runs, drawn on `ax`;
+    returns each run's largest ratio (the centre of the last logarithmic bin holding a contact:
+    those bins reach 20, the linear ones stop at 6)."""
+    import numpy as np
+    pdfs = [read_table(d / "force_pdf.csv") for d in folders if (d / "force_pdf.csv").exists()]
+    largest = []
+    for t in pdfs:
+        tail = [x for sc, x, y in zip(t["scale"], t["force_ratio"], t["density"]) if sc == 1 and y > 0]
+        if tail:
+            largest.append(max(tail))
+    if pdfs:
+        logs = [[(x, y) for sc, x, y in zip(t["scale"], t["force_ratio"], t["density"]) if sc == 1] for t in pdfs]
+        xs = [x for x, _ in logs[0]]
+        if all(len(l) == len(xs) for l in logs):
+            mean = np.mean([[y for _, y in l] for l in logs], axis=0)
+            ax.plot(xs, np.where(mean > 0, mean, np.nan), "-", color=colour, label=f"{label} ({len(pdfs)} runs)")
+    return largest
+
+
+def fabric(folders, polar, colour, label):
+    """Fig. 17: the mean branch-vector density in the xz plane over the runs, drawn on `polar`;
+    returns each run's anisotropy and preferred direction (degrees from x)."""
+    import numpy as np
+    fabrics = [json.loads((d / "summary.json").read_text())["dam_break"]["before_gate"].get("fabric_xz", {}) for d in folders]
+    tabs = [read_table(d / "fabric.csv") for d in folders if (d / "fabric.csv").exists()]
+    if tabs:
+        theta = np.array(tabs[0]["theta"])
+        mean = np.mean([t["density"] for t in tabs], axis=0)
+        polar.plot(np.concatenate([theta, theta + np.pi, theta[:1]]), np.concatenate([mean, mean, mean[:1]]),
+                   "-", color=colour, label=label)
+    return ([f["anisotropy"] for f in fabrics if "anisotropy" in f],
+            [math.degrees(f["direction"]) for f in fabrics if "direction" in f])
+
+
 def huet_micro(lines, figures, base=VALIDATION):
     """Huet et al. 2021, Figs. 12, 15 and 17 from every kept run of the spheres and the crosses:
     the mean speed against t/tau_c, the PDF of F_c/<F_c> before the gate opens (its tail: the
@@ -322,7 +357,6 @@ def huet_micro(lines, figures, base=VALIDATION):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    import numpy as np
     fig, axes = plt.subplots(1, 3, figsize=(15, 4))
     polar = fig.add_subplot(1, 3, 3, projection="polar")
     axes[2].remove()
@@ -333,31 +367,9 @@ def huet_micro(lines, figures, base=VALIDATION):
     for fam, folders in runs.items():
         if not folders:
             continue
-        pdfs = [read_table(d / "force_pdf.csv") for d in folders if (d / "force_pdf.csv").exists()]
-        largest = []
-        for t in pdfs:
-            # The logarithmic bins reach F_c/<F_c> = 20 (the linear ones stop at 6): the centre of
-            # the last one holding a contact.
-            tail = [x for sc, x, y in zip(t["scale"], t["force_ratio"], t["density"]) if sc == 1 and y > 0]
-            if tail:
-                largest.append(max(tail))
-        if pdfs:
-            logs = [[(x, y) for sc, x, y in zip(t["scale"], t["force_ratio"], t["density"]) if sc == 1] for t in pdfs]
-            xs = [x for x, _ in logs[0]]
-            same = all(len(l) == len(xs) for l in logs)
-            if same:
-                mean = np.mean([[y for _, y in l] for l in logs], axis=0)
-                axes[1].plot(xs, np.where(mean > 0, mean, np.nan), "-", color=colours[fam], label=f"{fam} ({len(pdfs)} runs)")
-        fabrics = [json.loads((d / "summary.json").read_text())["dam_break"]["before_gate"].get("fabric_xz", {}) for d in folders]
-        aniso = [f["anisotropy"] for f in fabrics if "anisotropy" in f]
-        direction = [math.degrees(f["direction"]) for f in fabrics if "direction" in f]
-        tabs = [read_table(d / "fabric.csv") for d in folders if (d / "fabric.csv").exists()]
-        if tabs:
-            theta = np.array(tabs[0]["theta"])
-            mean = np.mean([t["density"] for t in tabs], axis=0)
-            polar.plot(np.concatenate([theta, theta + np.pi, theta[:1]]), np.concatenate([mean, mean, mean[:1]]),
-                       "-", color=colours[fam], label=fam)
-        for d in folders:
+        largest = force_tail(folders, axes[1], colours[fam], fam)
+        aniso, direction = fabric(folders, polar, colours[fam], fam)
+        for d in folders:  # Fig. 12
             if (d / "collapse_speeds.csv").exists():
                 t = read_table(d / "collapse_speeds.csv")
                 axes[0].plot(t["time_over_tau"], t["speed_over_sqrt_gH0"], "-", color=colours[fam], lw=0.6, alpha=0.6)
