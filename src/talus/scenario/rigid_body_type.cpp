@@ -12,14 +12,16 @@ RigidBodyType make_rigid_body_type(const CompositeShape& shape, double density) 
   t.mass = mp.mass;
   t.inertia = mp.principal_moments;
   t.radius = t.shape.bounding_radius;
+  t.principal = mp.principal_pose();
   return t;
 }
 
 ParticleInit rigid_particle(const RigidBodyType& type, int shape_index, const Vec3& position, const Quat& orientation,
                             int species) {
   ParticleInit p;
-  p.position = position;
-  p.orientation = orientation;
+  // The World steps the principal frame: a user's orientation means the shape as given.
+  p.position = position + orientation.rotate(type.principal.position);
+  p.orientation = (orientation * type.principal.orientation).normalized();
   p.radius = type.radius;
   p.mass = type.mass;
   p.inertia = type.inertia;

@@ -18,6 +18,7 @@
 #include "talus/scenario/insertion.h"
 #include "talus/scenario/particle_budget.h"
 #include "talus/scenario/rigid_body_type.h"
+#include "talus/scenario/shape_reader.h"
 #include "talus/shape/convex_shape.h"
 
 namespace talus {
@@ -51,30 +52,14 @@ struct SpeciesInfo {
   }
 };
 
-// [species.NAME] shape = "sphere" (radius), "box" (half_extents), "cross" (length, width,
-// thickness: Huet et al. 2021, Sec. III B); crust: the rounding of GJK's crust method.
+// [species.NAME]: its shape (shape_reader.h); a sphere's radius.
 void read_shape(const ScenarioFile& f, const std::string& key, SpeciesInfo& s) {
-  const std::string shape = f.get_choice_or(key + ".shape", "sphere", {"sphere", "box", "cross"});
-  if (shape == "sphere") {
+  const std::optional<CompositeShape> body = read_body_shape(f, key);
+  if (!body) {
     s.radius = f.get<double>(key + ".radius", io::positive);
     return;
   }
-  CompositeShape c;
-  if (shape == "box") {
-    const Vec3 h = f.get<Vec3>(key + ".half_extents", io::positive);
-    const double crust = f.get_or<double>(key + ".crust", 0.05 * std::min({h.x, h.y, h.z}), io::non_negative);
-    if (crust >= std::min({h.x, h.y, h.z})) f.fail(key + ".crust", "must be smaller than the smallest half extent");
-    c.add(make_box(h, crust), Pose{});
-  } else {
-    const double length = f.get_or<double>(key + ".length", 27e-3, io::positive);
-    const double width = f.get_or<double>(key + ".width", 2e-3, io::positive);
-    const double thickness = f.get_or<double>(key + ".thickness", 3e-3, io::positive);
-    const double crust = f.get_or<double>(key + ".crust", 0.05 * std::min(width, thickness), io::non_negative);
-    if (crust >= 0.5 * std::min({length, width, thickness}))
-      f.fail(key + ".crust", "must be smaller than half the arm length, width and thickness");
-    c = make_huet_cross(length, width, thickness, crust);
-  }
-  s.body = make_rigid_body_type(c, s.density);
+  s.body = make_rigid_body_type(*body, s.density);
   s.radius = s.body->radius;
 }
 
@@ -259,6 +244,15 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
     read_shape(f, key, s);
     check_mass(f, key + ".density", s);
     species.push_back(s);
+    // What `talus check` prints of each species: its mass properties, the centre of mass in
+    // the frame its shape was given in.
+    const Vec3 centre = s.body ? s.body->principal.position : Vec3{};
+    const Vec3 moments = s.body ? s.body->inertia : Vec3{1, 1, 1} * s.inertia();
+    sc.derived["species"][name] = {{"volume", s.body ? s.body->volume : 4.0 / 3.0 * kPi * std::pow(s.radius, 3)},
+                                   {"mass", s.mass()},
+                                   {"centre_of_mass", {centre.x, centre.y, centre.z}},
+                                   {"principal_moments", {moments.x, moments.y, moments.z}},
+                                   {"bounding_radius", s.radius}};
   }
   if (species.empty()) f.fail("species", "define at least one species, e.g. [species.glass] density = 2500, radius = 0.001");
   auto species_index = [&](const std::string& key) {

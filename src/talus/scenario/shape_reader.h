@@ -1,0 +1,20 @@
+#pragma once
+// The shape of a species, from its [species.NAME] table: `shape` = "sphere" (radius, read by
+// the caller), "box" (half_extents), "cross" (Huet et al. 2021, Sec. III B: length, width,
+// thickness), "cylinder" (radius, height; axis z), "polyhedron" (the convex hull of `vertices`)
+// or "composite" (a union of convex parts, [[species.NAME.parts]], each a box, cylinder,
+// sphere or polyhedron with its `position` and `orientation` [w, x, y, z] in the body frame,
+// Huet et al. 2021, Sec. II A). Every convex shape takes a `crust`, the rounding of GJK's crust
+// method; its default is 5 % of the shape's smallest half dimension.
+#include <optional>
+#include <string>
+
+#include "talus/io/scenario_file.h"
+#include "talus/shape/composite_shape.h"
+
+namespace talus {
+
+// The body of a shaped species, or nothing for a sphere. Errors name the key.
+std::optional<CompositeShape> read_body_shape(const io::ScenarioFile& f, const std::string& key);
+
+}  // namespace talus
