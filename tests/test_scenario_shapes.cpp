@@ -150,6 +150,46 @@ crust = 5e-4
   EXPECT_NEAR(w.particles().position[0].z, 0.01, 2e-4);  // rolling, not hopping
 }
 
+// The named shapes' volumes against their closed forms: a hexapod of three w x w x L rods
+// 3 L w^2 - 2 w^3 (exact: its arms are boxes along the axes); a stellated octahedron in a cube
+// of side 2a, two tetrahedra of 8a^3/3 sharing an octahedron of 4a^3/3, 4 a^3; a rod
+// pi r^2 L + 4/3 pi r^3. The last two count their overlaps by quadrature (mass_properties.h),
+// within 1e-3. A tetrapod is as stiff to turn about every axis (tetrahedral symmetry).
+TEST(ScenarioShapes, NamedShapesHaveTheirVolumes) {
+  const std::string species = R"([species.hexapod]
+shape = "hexapod"
+density = 1000
+length = 0.03
+width = 0.004
+
+[species.star]
+shape = "stellated_octahedron"
+density = 1000
+size = 0.02
+
+[species.rod]
+shape = "rod"
+density = 1000
+length = 0.03
+radius = 0.003
+
+[species.tetrapod]
+shape = "tetrapod"
+density = 1000
+length = 0.015
+radius = 0.002
+)";
+  Scenario sc = load(scene(species, particle("hexapod", {-0.5, 0, 0.05}) + particle("star", {-0.2, 0, 0.05}) +
+                                        particle("rod", {0.1, 0, 0.05}) + particle("tetrapod", {0.4, 0, 0.05})));
+  const nlohmann::json& s = sc.derived["species"];
+  const double pi = std::numbers::pi;
+  EXPECT_NEAR(s["hexapod"]["volume"].get<double>(), 3 * 0.03 * 16e-6 - 2 * 64e-9, 1e-15);
+  EXPECT_NEAR(s["star"]["volume"].get<double>() / (4 * 1e-6), 1.0, 1e-3);
+  EXPECT_NEAR(s["rod"]["volume"].get<double>() / (pi * 9e-6 * 0.03 + 4.0 / 3.0 * pi * 27e-9), 1.0, 1e-3);
+  const nlohmann::json& moments = s["tetrapod"]["principal_moments"];
+  EXPECT_NEAR(moments[0].get<double>() / moments[2].get<double>(), 1.0, 1e-3);
+}
+
 TEST(ScenarioShapes, MalformedShapesAreNamed) {
   const std::string flat = R"([species.hull]
 shape = "polyhedron"
