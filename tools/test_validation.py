@@ -40,6 +40,25 @@ class Validation(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
+    def test_kept_runs_are_not_run_again(self):
+        # A fresh checkout has the kept runs under validation/ but no runs folder: they go back
+        # into it with their summaries, so that the sweep passes over them; an interrupted one
+        # does not.
+        fam = validation.FAMILIES[0]
+        saved = validation.VALIDATION
+        validation.VALIDATION = self.base / "validation"
+        try:
+            kept = fam.folder(validation.VALIDATION) / "gate_position=0.04"
+            for seed, reason in [(1, "collapse_over"), (2, "interrupted")]:
+                (kept / f"seed_{seed}").mkdir(parents=True)
+                (kept / f"seed_{seed}" / "summary.json").write_text(json.dumps({"stop_reason": reason}))
+            runs = fam.folder(self.base / "runs")
+            validation.restore_kept(fam, runs)
+            self.assertTrue(validation.finished(runs / "gate_position=0.04" / "seed_1"))
+            self.assertFalse((runs / "gate_position=0.04" / "seed_2").exists())
+        finally:
+            validation.VALIDATION = saved
+
     def test_power_fit_recovers_its_parameters(self):
         a = np.array([0.8, 1.5, 2.5, 4.0, 6.0, 9.0])
         y = 1.9 * a ** 0.67 * np.exp(self.rng.normal(0, 0.03, a.size))

@@ -138,6 +138,7 @@ def run(args):
         if only and fam.name not in only:
             continue
         out = fam.folder(runs)
+        restore_kept(fam, out)
         for run_dir in run_folders(out).values():  # interrupted: run again
             if (run_dir / "summary.json").exists() and not finished(run_dir):
                 (run_dir / "summary.json").unlink()
@@ -148,6 +149,21 @@ def run(args):
         print(" ".join(cmd), flush=True)
         subprocess.run(cmd, check=False)
         compact(fam, out)
+
+
+def restore_kept(fam: Family, runs_dir: Path):
+    """Puts the runs kept under validation/ back into a runs folder that lacks them (a fresh
+    checkout), so that the sweep, which passes over runs with a summary.json, does not run
+    them again."""
+    kept = fam.folder(VALIDATION)
+    for (value, seed), run_dir in run_folders(kept).items():
+        target = runs_dir / run_dir.parent.name / run_dir.name
+        if not finished(run_dir) or (target / "summary.json").exists():
+            continue
+        target.mkdir(parents=True, exist_ok=True)
+        for name in KEPT_FILES:
+            if (run_dir / name).exists():
+                shutil.copyfile(run_dir / name, target / name)
 
 
 def compact(fam: Family, runs_dir: Path):
