@@ -21,7 +21,7 @@ ParticleInit rigid_particle(const RigidBodyType& type, int shape_index, const Ve
   ParticleInit p;
   // The World steps the principal frame: a user's orientation means the shape as given.
   p.position = position + orientation.rotate(type.principal.position);
-  p.orientation = (orientation * type.principal.orientation).normalized();
+  p.orientation = orientation * type.principal.orientation;
   p.radius = type.radius;
   p.mass = type.mass;
   p.inertia = type.inertia;
