@@ -159,8 +159,9 @@ crust = 5e-4
 // The named shapes' volumes against their closed forms: a hexapod of three w x w x L rods
 // 3 L w^2 - 2 w^3 (exact: its arms are boxes along the axes); a stellated octahedron in a cube
 // of side 2a, two tetrahedra of 8a^3/3 sharing an octahedron of 4a^3/3, 4 a^3; a rod
-// pi r^2 L + 4/3 pi r^3. The last two count their overlaps by quadrature (mass_properties.h),
-// within 1e-3. A tetrapod is as stiff to turn about every axis (tetrahedral symmetry).
+// pi r^2 L + 4/3 pi r^3. All three count their overlaps exactly (mass_properties.h); the
+// tetrapod's crossing cylinders by quadrature, yet it is as stiff to turn about every axis
+// (tetrahedral symmetry) within 1e-3.
 TEST(ScenarioShapes, NamedShapesHaveTheirVolumes) {
   const std::string species = R"([species.hexapod]
 shape = "hexapod"
@@ -190,8 +191,8 @@ radius = 0.002
   const nlohmann::json& s = sc.derived["species"];
   const double pi = std::numbers::pi;
   EXPECT_NEAR(s["hexapod"]["volume"].get<double>(), 3 * 0.03 * 16e-6 - 2 * 64e-9, 1e-15);
-  EXPECT_NEAR(s["star"]["volume"].get<double>() / (4 * 1e-6), 1.0, 1e-3);
-  EXPECT_NEAR(s["rod"]["volume"].get<double>() / (pi * 9e-6 * 0.03 + 4.0 / 3.0 * pi * 27e-9), 1.0, 1e-3);
+  EXPECT_NEAR(s["star"]["volume"].get<double>() / (4 * 1e-6), 1.0, 1e-12);
+  EXPECT_NEAR(s["rod"]["volume"].get<double>() / (pi * 9e-6 * 0.03 + 4.0 / 3.0 * pi * 27e-9), 1.0, 1e-12);
   const nlohmann::json& moments = s["tetrapod"]["principal_moments"];
   EXPECT_NEAR(moments[0].get<double>() / moments[2].get<double>(), 1.0, 1e-3);
 }

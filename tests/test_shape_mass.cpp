@@ -156,7 +156,7 @@ TEST(MassProperties, QuadratureOnRotatedCross) {
   CompositeShape rotated;
   for (const CompositePart& p : make_huet_cross().parts) rotated.add(p.shape, Pose{{}, q} * p.pose);
   const MassProperties exact = mass_properties(make_huet_cross(), 770);
-  const MassProperties quad = mass_properties(rotated, 770);
+  const MassProperties quad = mass_properties(rotated, 770, {.force_quadrature = true});
   const double overlap_fraction = 12.0 / 312.0;
   EXPECT_NEAR(quad.volume, exact.volume, 2e-3 * overlap_fraction * exact.volume);  // 0.2 % of the overlap
   std::printf("rotated cross: volume rel err %.2e, Izz rel err %.2e\n", quad.volume / exact.volume - 1,
@@ -171,11 +171,99 @@ TEST(MassProperties, QuadratureOnOverlappingSpheres) {
   c.add(make_sphere(R), Pose{{d / 2, 0, 0}, {}});
   const double lens = kPi * (4 * R + d) * (2 * R - d) * (2 * R - d) / 12;
   const double exact = 2 * 4.0 / 3 * kPi - lens;
-  const MassProperties mp = mass_properties(c, 1);
+  const MassProperties mp = mass_properties(c, 1, {.force_quadrature = true});
   // Error in the lens (the only approximated part) below 1e-4 of the lens at the default grid.
   EXPECT_NEAR(mp.volume, exact, 1e-4 * lens);
   EXPECT_NEAR(norm(mp.centre_of_mass), 0, 1e-12);
   std::printf("sphere lens: relative error of the overlap %.2e\n", (mp.volume - exact) / lens);
+}
+
+// Inclusion-exclusion with half-space intersections: the cross turned off the body axes (pair
+// overlaps) and a hexapod turned anyhow (three arms meeting in one cube) keep their exact
+// axis-aligned mass properties to round-off.
+TEST(MassProperties, TurnedCompositesOfBoxesStayExact) {
+  const Quat turn = Quat::from_axis_angle(normalized_or_zero(Vec3{0.3, -0.5, 0.8}), 0.7);
+  const Vec3 shift{1e-3, -2e-3, 0.5e-3};
+  auto turned = [&](const CompositeShape& c) {
+    CompositeShape out;
+    for (const CompositePart& p : c.parts) out.add(p.shape, Pose{shift, turn} * p.pose);
+    return out;
+  };
+  const double arm = 20e-3, width = 2e-3;
+  CompositeShape hexapod;
+  const Vec3 h{0.5 * width, 0.5 * width, 0.5 * arm};
+  hexapod.add(make_box(h), Pose{});
+  hexapod.add(make_box(h), Pose{{}, Quat::from_axis_angle({1, 0, 0}, 0.5 * kPi)});
+  hexapod.add(make_box(h), Pose{{}, Quat::from_axis_angle({0, 1, 0}, 0.5 * kPi)});
+  expect_rel(mass_properties(hexapod, 1).volume, 3 * arm * width * width - 2 * width * width * width, 1e-12);
+  for (const CompositeShape& aligned : {make_huet_cross(), hexapod}) {
+    const MassProperties want = mass_properties(aligned, 770), got = mass_properties(turned(aligned), 770);
+    expect_rel(got.volume, want.volume, 1e-12);
+    for (int k = 0; k < 3; ++k) {
+      expect_rel(got.principal_moments[k], want.principal_moments[k], 1e-11);
+      EXPECT_NEAR(got.centre_of_mass[k], shift[k], 1e-12 * arm);
+    }
+  }
+}
+
+// Two regular tetrahedra in the corners of one cube of half side a meet in the octahedron
+// |x| + |y| + |z| <= a: V = 2 (8/3) a^3 - (4/3) a^3 = 4 a^3 and, from the tetrahedra's and the
+// octahedron's int x^2 dV (V_t a^2 / 5 and 2 a^5 / 15), I = 2 rho (2 (8/15) - 2/15) a^5.
+TEST(MassProperties, StellatedOctahedronExact) {
+  const double a = 1.5e-3, rho = 2500;
+  const std::vector<Vec3> first{{a, a, a}, {a, -a, -a}, {-a, a, -a}, {-a, -a, a}};
+  std::vector<Vec3> second;
+  for (const Vec3& v : first) second.push_back(-1.0 * v);
+  CompositeShape star;
+  star.add(make_polyhedron(first), Pose{});
+  star.add(make_polyhedron(second), Pose{});
+  const MassProperties mp = mass_properties(star, rho);
+  expect_rel(mp.volume, 4 * a * a * a, 1e-12);
+  for (int k = 0; k < 3; ++k) expect_rel(mp.principal_moments[k], rho * 28.0 / 15.0 * std::pow(a, 5), 1e-12);
+  EXPECT_NEAR(norm(mp.centre_of_mass), 0, 1e-15);
+}
+
+// A spherocylinder as a cylinder and two balls on its caps: V = pi r^2 L + 4/3 pi r^3; each half
+// ball (mass m_h, centroid 3r/8 beyond its cap) adds 2/5 m_h r^2 + m_h (L^2/4 + 3 r L / 8) across.
+TEST(MassProperties, RodExact) {
+  const double r = 1e-3, L = 6e-3, rho = 1000;
+  CompositeShape rod;
+  rod.add(make_cylinder(r, 0.5 * L), Pose{});
+  rod.add(make_sphere(r), Pose{{0, 0, 0.5 * L}, {}});
+  rod.add(make_sphere(r), Pose{{0, 0, -0.5 * L}, {}});
+  const MassProperties mp = mass_properties(rod, rho);
+  const double mc = rho * kPi * r * r * L, mh = rho * 2.0 / 3.0 * kPi * r * r * r;
+  expect_rel(mp.volume, kPi * r * r * L + 4.0 / 3.0 * kPi * r * r * r, 1e-12);
+  const double across = mc * (3 * r * r + L * L) / 12 + 2 * (0.4 * mh * r * r + mh * (L * L / 4 + 3 * r * L / 8));
+  const double along = mc * r * r / 2 + 2 * 0.4 * mh * r * r;
+  expect_rel(mp.principal_moments.x, along, 1e-12);
+  expect_rel(mp.principal_moments.y, across, 1e-12);
+  expect_rel(mp.principal_moments.z, across, 1e-12);
+}
+
+// Two balls meeting in a lens: exact volume; the quadrature agrees on the inertia.
+TEST(MassProperties, OverlappingSpheresExact) {
+  const double R = 1, d = 1.2;
+  CompositeShape c;
+  c.add(make_sphere(R), Pose{{-d / 2, 0.2, 0}, {}});
+  c.add(make_sphere(R), Pose{{d / 2, 0.2, 0}, {}});
+  const double lens = kPi * (4 * R + d) * (2 * R - d) * (2 * R - d) / 12;
+  const MassProperties exact = mass_properties(c, 1);
+  expect_rel(exact.volume, 2 * 4.0 / 3 * kPi - lens, 1e-12);
+  EXPECT_NEAR(exact.centre_of_mass.y, 0.2, 1e-12);
+  const MassProperties quad = mass_properties(c, 1, {.force_quadrature = true});
+  for (int k = 0; k < 3; ++k) expect_rel(exact.principal_moments[k], quad.principal_moments[k], 1e-4);
+}
+
+// Crossing cylinders have no closed form here: the quadrature runs, within its bound.
+TEST(MassProperties, CrossingCylindersFallBackToQuadrature) {
+  const double r = 1, h = 4;
+  CompositeShape c;
+  c.add(make_cylinder(r, h), Pose{});
+  c.add(make_cylinder(r, h), Pose{{}, Quat::from_axis_angle({1, 0, 0}, 0.5 * kPi)});
+  const double steinmetz = 16.0 / 3.0 * r * r * r;  // two perpendicular unit cylinders share 16/3 r^3
+  const MassProperties mp = mass_properties(c, 1);
+  EXPECT_NEAR(mp.volume, 2 * 2 * kPi * r * r * h - steinmetz, 1e-3 * steinmetz);
 }
 
 }  // namespace

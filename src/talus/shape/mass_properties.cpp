@@ -1,8 +1,12 @@
 #include "talus/shape/mass_properties.h"
 
+#include "talus/shape/part_intersection.h"
+#include "talus/shape/volume_moments.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace talus {
 namespace {
@@ -10,73 +14,7 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-Vector3d ev(const Vec3& v) { return {v.x, v.y, v.z}; }
-
-// Volume integrals about the frame origin: V, int x dV, int x x^T dV.
-struct Moments {
-  double volume = 0;
-  Vector3d first = Vector3d::Zero();
-  Matrix3d second = Matrix3d::Zero();
-
-  Moments& operator+=(const Moments& o) {
-    volume += o.volume;
-    first += o.first;
-    second += o.second;
-    return *this;
-  }
-  Moments operator*(double s) const { return {volume * s, first * s, second * s}; }
-};
-
-// Moments of a body after placing it with pose (rotation R, translation t).
-Moments transformed(const Moments& m, const Pose& pose) {
-  const Quat& q = pose.orientation;
-  const Matrix3d R = Eigen::Quaterniond(q.w, q.x, q.y, q.z).toRotationMatrix();
-  const Vector3d t = ev(pose.position);
-  const Vector3d rf = R * m.first;
-  Moments out;
-  out.volume = m.volume;
-  out.first = rf + m.volume * t;
-  out.second = R * m.second * R.transpose() + rf * t.transpose() + t * rf.transpose() + m.volume * t * t.transpose();
-  return out;
-}
-
-Moments box_moments(const Vec3& h, const Vector3d& centre) {
-  Moments m;
-  m.volume = 8 * h.x * h.y * h.z;
-  m.second.diagonal() << m.volume * h.x * h.x / 3, m.volume * h.y * h.y / 3, m.volume * h.z * h.z / 3;
-  return transformed(m, Pose{{centre.x(), centre.y(), centre.z()}, Quat{}});
-}
-
-Moments polyhedron_moments(const ConvexHull& h) {
-  // Tetrahedra (origin, a, b, c): int x x^T = V/20 (sum p p^T + (sum p)(sum p)^T), origin included.
-  Moments m;
-  for (const auto& t : h.triangles) {
-    const Vector3d a = ev(h.vertices[t[0]]), b = ev(h.vertices[t[1]]), c = ev(h.vertices[t[2]]);
-    const double v = a.dot(b.cross(c)) / 6;
-    const Vector3d s = a + b + c;
-    m.volume += v;
-    m.first += v * s / 4;
-    m.second += v / 20 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
-  }
-  return m;
-}
-
-Moments moments(const ConvexGeometry& g) {
-  Moments m;
-  if (const auto* s = std::get_if<Sphere>(&g)) {
-    m.volume = 4.0 / 3.0 * std::numbers::pi * std::pow(s->radius, 3);
-    m.second = Matrix3d::Identity() * (m.volume * s->radius * s->radius / 5);
-  } else if (const auto* b = std::get_if<Box>(&g)) {
-    m = box_moments(b->half_extents, Vector3d::Zero());
-  } else if (const auto* c = std::get_if<Cylinder>(&g)) {
-    m.volume = 2 * std::numbers::pi * c->radius * c->radius * c->half_height;
-    const double r2 = m.volume * c->radius * c->radius / 4;
-    m.second.diagonal() << r2, r2, m.volume * c->half_height * c->half_height / 3;
-  } else {
-    m = polyhedron_moments(std::get<ConvexPolyhedron>(g).hull);
-  }
-  return m;
-}
+using Moments = VolumeMoments;
 
 MassProperties finish(const Moments& m, double density) {
   MassProperties mp;
@@ -133,7 +71,7 @@ Moments aligned_box_union(const std::vector<Aabb>& boxes) {
           return mid.x > b.lo.x && mid.x < b.hi.x && mid.y > b.lo.y && mid.y < b.hi.y && mid.z > b.lo.z &&
                  mid.z < b.hi.z;
         });
-        if (inside) m += box_moments((hi - lo) * 0.5, ev(mid));
+        if (inside) m += box_moments((hi - lo) * 0.5, mid);
       }
   return m;
 }
@@ -190,9 +128,9 @@ Moments overlap_excess(const CompositeShape& c, int cells_longest) {
     for (int j = 0; j < ny; ++j)
       for (int k = 0; k < nz; ++k)
         at(i, j, k) = static_cast<unsigned char>(count_at(region.lo + Vec3{i * step.x, j * step.y, k * step.z}));
-  const Moments cell = box_moments(step * 0.5, Vector3d::Zero());
+  const Moments cell = box_moments(step * 0.5, Vec3{});
   const Vec3 sub_step = step / kSub;
-  const Moments sub = box_moments(sub_step * 0.5, Vector3d::Zero());
+  const Moments sub = box_moments(sub_step * 0.5, Vec3{});
   for (int i = 0; i < cells[0]; ++i)
     for (int j = 0; j < cells[1]; ++j)
       for (int k = 0; k < cells[2]; ++k) {
@@ -212,6 +150,31 @@ Moments overlap_excess(const CompositeShape& c, int cells_longest) {
             }
       }
   return m;
+}
+
+// Inclusion-exclusion over the parts that meet: V(union) = sum V(P_i) - sum V(P_i & P_j) + ...
+// Subsets grow only from ones of non-zero volume, so parts that meet in pairs cost pairs.
+// nullopt when some common volume has no closed form (part_intersection.h).
+std::optional<Moments> union_by_inclusion_exclusion(const CompositeShape& c) {
+  const int n = static_cast<int>(c.parts.size());
+  Moments total;
+  std::vector<int> subset;
+  bool exact = true;
+  auto grow = [&](auto&& self, int next) -> void {
+    for (int i = next; i < n && exact; ++i) {
+      subset.push_back(i);
+      const std::optional<Moments> common = intersection_moments(c, subset);
+      if (!common) exact = false;
+      else if (common->volume > 0) {
+        total += *common * (subset.size() % 2 == 1 ? 1.0 : -1.0);
+        self(self, i + 1);
+      }
+      subset.pop_back();
+    }
+  };
+  grow(grow, 0);
+  if (!exact) return std::nullopt;
+  return total;
 }
 
 }  // namespace
@@ -238,6 +201,8 @@ MassProperties mass_properties(const CompositeShape& c, double density, const Co
     boxes.push_back(a);
   }
   if (all_aligned_boxes) return finish(aligned_box_union(boxes), density);
+  if (!options.force_quadrature)
+    if (const std::optional<Moments> exact = union_by_inclusion_exclusion(c)) return finish(*exact, density);
 
   Moments m;
   for (const CompositePart& p : c.parts) m += transformed(moments(p.shape.geometry), p.pose);

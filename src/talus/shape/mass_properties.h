@@ -6,11 +6,14 @@
 // Composites count overlapping volume once:
 //   - exactly when every part is a box whose axes map onto the body axes (coordinate
 //     compression into disjoint cells; e.g. the Huet cross, V = 2*27*2*3 - 2*2*3 mm^3);
-//   - otherwise as the exact sum over parts minus a midpoint-rule quadrature of the multiply
-//     covered volume on a node grid refined x8 in boundary cells (only the overlap is
-//     approximated; error O(cell size x overlap surface): measured 2e-5 of the overlap for two
-//     spheres, 1e-3 of the overlap = 4e-5 of the total for a cross rotated off the body axes,
-//     0.2-0.5 s offline; see test_shape_mass.cpp).
+//   - else exactly by inclusion-exclusion over the parts that meet, when every common volume
+//     has a closed form (part_intersection.h: any polyhedral parts at any angle, two balls, a
+//     ball capping a cylinder): crosses at any angle, stellated octahedra, rods, mesh unions;
+//   - otherwise (e.g. crossing cylinders, as in a tetrapod) as the exact sum over parts minus a
+//     midpoint-rule quadrature of the multiply covered volume on a node grid refined x8 in
+//     boundary cells (only the overlap is approximated; error O(cell size x overlap surface):
+//     measured 2e-5 of the overlap for two spheres, 1e-3 of the overlap = 4e-5 of the total
+//     for a cross rotated off the body axes, 0.2-0.5 s offline; see test_shape_mass.cpp).
 // To store a body in its principal frame: principal_pose() is that frame in the shape frame;
 // to_principal_frame() re-expresses a composite's part poses in it.
 #include <Eigen/Dense>
@@ -34,7 +37,7 @@ struct MassProperties {
 
 struct CompositeMassOptions {
   int quadrature_cells = 64;  ///< cells along the longest side of the overlap region (x8 at boundaries)
-  bool force_quadrature = false;  ///< skip the exact aligned-box path (for testing)
+  bool force_quadrature = false;  ///< skip the exact paths (for testing the quadrature)
 };
 
 MassProperties mass_properties(const ConvexGeometry& g, double density);
