@@ -5,11 +5,14 @@
 
 namespace talus {
 
-enum class Phase { integrate, neighbors, pair_forces, wall_forces, placement, exchange, count };
+// exchange: halo messages and migration; rebuild_vote: the ranks agreeing whether to rebuild,
+// where a rank ahead of the others waits for them.
+enum class Phase { integrate, neighbors, pair_forces, wall_forces, placement, exchange, rebuild_vote, count };
 
 // The name each phase has in a run's summary.json.
 inline const char* phase_name(Phase p) {
-  constexpr const char* kNames[] = {"integrate", "neighbours", "pair_forces", "wall_forces", "placement", "exchange"};
+  constexpr const char* kNames[] = {"integrate",  "neighbours", "pair_forces", "wall_forces",
+                                    "placement", "exchange",   "rebuild_vote"};
   return kNames[static_cast<int>(p)];
 }
 

@@ -161,7 +161,12 @@ void World::open_step(int opening_kicks) {
 
 void World::move_to_next_step() {
   time_ += settings_.time_step;
-  if (communicator().any(needs_rebuild())) {
+  bool rebuild_now = needs_rebuild();
+  if (distributed()) {
+    ScopedPhase vote(timer_, Phase::rebuild_vote);
+    rebuild_now = communicator().any(rebuild_now);
+  }
+  if (rebuild_now) {
     rebuild();  // new ghosts copy the current state, with zero forces
   } else {
     if (!ends_.ghosts_fresh) lists_.ghosts.refresh(particles_);
