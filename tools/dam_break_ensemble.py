@@ -96,12 +96,30 @@ def blown_up(run: Path) -> bool:
     return json.loads((run / "summary.json").read_text()).get("stop_reason") == "blow_up"
 
 
+def finished(run: Path) -> bool:
+    """A run that ended by itself. One cut off (Ctrl-C, a time limit) wrote a summary too, of a
+    collapse not yet over: it is not finished, and goes on from its checkpoint."""
+    f = run / "summary.json"
+    return f.exists() and json.loads(f.read_text()).get("stop_reason") != "interrupted"
+
+
+def run_command(talus: str, scenario: Path, out: Path, overrides) -> list:
+    """The command that runs a case, or resumes it from its newest checkpoint, bit for bit, when an
+    earlier run of it was cut off."""
+    if (out / "checkpoints" / "latest.h5").exists():
+        return [talus, "resume", str(out), "--threads", "1", "--quiet"]
+    cmd = [talus, "run", str(scenario), "--out", str(out), "--threads", "1", "--quiet", "--overwrite"]
+    for o in overrides:
+        cmd += ["--set", o]
+    return cmd
+
+
 def seed_folders(folder: Path, blown=False):
-    """{seed: path} of the finished runs (those with a summary.json) in `folder`, without the
-    runs that blew up; with blown=True, only those."""
+    """{seed: path} of the finished runs in `folder`, without the runs that blew up; with
+    blown=True, only those."""
     runs = {}
     for d in folder.glob("seed_*"):
-        if (d / "summary.json").exists() and d.name[5:].isdigit() and blown_up(d) == blown:
+        if finished(d) and d.name[5:].isdigit() and blown_up(d) == blown:
             runs[int(d.name[5:])] = d
     return dict(sorted(runs.items()))
 
@@ -137,19 +155,16 @@ def write_ensemble(folder: Path, meta: dict | None = None) -> dict:
 def run_all(jobs_list, jobs: int, talus: str) -> list:
     """Runs every (scenario, out, overrides) through a case pool (tools/case_pool.py: `jobs` at
     a time here, one per rank under mpirun), one thread each; returns the failed ones. Finished
-    runs (summary.json present) are not run again."""
+    runs are not run again, and cut-off ones resume."""
     pool = case_pool.open_pool(jobs, "ensemble")
-    pending = [j for j in jobs_list if not (j[1] / "summary.json").exists()]
+    pending = [j for j in jobs_list if not finished(j[1])]
     failed, done, running = [], len(jobs_list) - len(pending), 0
     total = len(jobs_list)
     while pending or running:
         while pending and pool.free() > 0:
             scenario, out, overrides = pending.pop(0)
             out.parent.mkdir(parents=True, exist_ok=True)
-            cmd = [talus, "run", str(scenario), "--out", str(out), "--threads", "1", "--quiet", "--overwrite"]
-            for o in overrides:
-                cmd += ["--set", o]
-            pool.start(out, cmd, str(out.parent / f"{out.name}.log"))
+            pool.start(out, run_command(talus, scenario, out, overrides), str(out.parent / f"{out.name}.log"))
             running += 1
         out, code = pool.wait_any()
         running -= 1
@@ -163,7 +178,7 @@ def run_all(jobs_list, jobs: int, talus: str) -> list:
 
 
 def all_finished(jobs_list) -> bool:
-    return all((j[1] / "summary.json").exists() for j in jobs_list)
+    return all(finished(j[1]) for j in jobs_list)
 
 
 def run_study(jobs_list, args, name: str, out: Path):
@@ -178,7 +193,7 @@ def run_study(jobs_list, args, name: str, out: Path):
         return None
     failed = run_all(jobs_list if args.case_index is None else [jobs_list[args.case_index]], args.jobs, args.talus)
     if not all_finished(jobs_list):
-        print(f"{name}: {sum((j[1] / 'summary.json').exists() for j in jobs_list)} of {len(jobs_list)} runs finished")
+        print(f"{name}: {sum(finished(j[1]) for j in jobs_list)} of {len(jobs_list)} runs finished")
         if failed:
             sys.exit(1)
         return None
