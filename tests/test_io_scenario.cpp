@@ -225,3 +225,18 @@ TEST(IoScenario, OverrideKeysListedLast) {
   f.set_override("species.c.density=1");
   EXPECT_EQ(f.table_keys("species"), (std::vector<std::string>{"b", "a", "c"}));
 }
+
+// A file named in a scenario starts from the scenario's folder; the saved document names it
+// absolutely, and the value keeps its line for later messages.
+TEST(IoScenario, PathsStartFromTheScenarioFolder) {
+  const ScenarioFile f = ScenarioFile::from_string(
+      "mesh = \"shapes/../shapes/a.stl\"\nabsolute = \"/data/b.stl\"\nempty = \"\"\n", "case.toml", "examples");
+  EXPECT_EQ(f.get_path("mesh"), std::filesystem::path("examples/shapes/a.stl"));
+  EXPECT_EQ(f.get_path("absolute"), std::filesystem::path("/data/b.stl"));
+  EXPECT_EQ(error_of([&] { f.get_path("empty"); }), "case.toml:3: empty: expected a file name, got an empty string");
+  const std::string saved = f.to_toml();
+  EXPECT_NE(saved.find((std::filesystem::current_path() / "examples/shapes/a.stl").string()), std::string::npos) << saved;
+  EXPECT_EQ(error_of([&] { f.fail("mesh", "unreadable"); }), "case.toml:1: mesh: unreadable");
+  // Text without a folder: the current one.
+  EXPECT_EQ(ScenarioFile::from_string("m = \"../a.stl\"\n", "x.toml").get_path("m"), std::filesystem::path("../a.stl"));
+}

@@ -1,35 +1,17 @@
 #include "talus/io/scenario_file.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "talus/io/edit_distance.h"
+#include "talus/io/input_file.h"
 #include "talus/io/scenario_file_impl.h"
 #include "talus/io/scenario_values.h"
 
 namespace talus::io {
-
-namespace {
-
-std::string read_whole_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path.string() + ": cannot open: is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open: " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path.string() + ": cannot read: " + std::strerror(errno));
-  return std::move(text).str();
-}
-
-}  // namespace
 
 // ---- construction -------------------------------------------------------------------------
 
@@ -39,12 +21,14 @@ ScenarioFile& ScenarioFile::operator=(ScenarioFile&&) noexcept = default;
 ScenarioFile::~ScenarioFile() = default;
 
 ScenarioFile ScenarioFile::from_file(const std::filesystem::path& path) {
-  return from_string(read_whole_file(path), path.string());
+  return from_string(read_input_file(path), path.string(), path.parent_path());
 }
 
-ScenarioFile ScenarioFile::from_string(std::string_view text, std::string display_name) {
+ScenarioFile ScenarioFile::from_string(std::string_view text, std::string display_name,
+                                       std::filesystem::path directory) {
   auto impl = std::make_unique<Impl>();
   impl->name = std::move(display_name);
+  impl->directory = std::move(directory);
   try {
     impl->root = toml::parse(text, impl->name);
   } catch (const toml::parse_error& e) {
@@ -97,6 +81,16 @@ template Vec3 ScenarioFile::get_or<Vec3>(std::string_view, Vec3, Check) const;
 template std::vector<double> ScenarioFile::get_or<std::vector<double>>(std::string_view,
                                                                        std::vector<double>,
                                                                        Check) const;
+
+std::filesystem::path ScenarioFile::get_path(std::string_view key) const {
+  const std::string name = get<std::string>(key);
+  const Impl::Found at = impl_->find(key);
+  if (name.empty()) impl_->raise(at, "expected a file name, got an empty string");
+  const std::filesystem::path path = (impl_->directory / name).lexically_normal();
+  // In place, so that the value keeps its line for later messages. The node is the document's own.
+  const_cast<toml::node*>(at.node)->as_string()->get() = std::filesystem::absolute(path).lexically_normal().string();
+  return path;
+}
 
 std::string ScenarioFile::get_choice(std::string_view key,
                                      const std::vector<std::string>& allowed) const {

@@ -39,8 +39,10 @@ class ScenarioFile {
  public:
   // Throws InputError `PATH: cannot open: REASON` or, on a TOML syntax error, `PATH:LINE: message`.
   static ScenarioFile from_file(const std::filesystem::path& path);
-  // Same, from text in memory; `display_name` stands for the file name in messages.
-  static ScenarioFile from_string(std::string_view text, std::string display_name);
+  // Same, from text in memory; `display_name` stands for the file name in messages, and
+  // `directory` for the file's folder, which relative paths in it start from (get_path).
+  static ScenarioFile from_string(std::string_view text, std::string display_name,
+                                  std::filesystem::path directory = {});
 
   ScenarioFile(ScenarioFile&&) noexcept;
   ScenarioFile& operator=(ScenarioFile&&) noexcept;
@@ -65,6 +67,13 @@ class ScenarioFile {
   // cannot silently become an integer getter.
   template <ScenarioValue T>
   T get_or(std::string_view key, std::type_identity_t<T> fallback, Check check = {}) const;
+
+  // A file named by a string: a relative path starts from the scenario file's folder (the
+  // current one for text without a directory), so a scenario and its files move together. The
+  // path comes back as the folder joined with the name, for messages; the document keeps it
+  // made absolute, so the copy to_toml() leaves in a results folder or a checkpoint names the
+  // same file from wherever it is read.
+  std::filesystem::path get_path(std::string_view key) const;
 
   // A string that must be one of `allowed` (e.g. a model name); the error lists them and
   // suggests the closest.

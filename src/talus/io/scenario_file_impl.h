@@ -17,6 +17,7 @@ namespace talus::io {
 
 struct ScenarioFile::Impl {
   std::string name;  ///< file name as given by the user, used in every message
+  std::filesystem::path directory;  ///< the file's folder, where relative paths in it start
   toml::table root;
   // Canonical keys the program read, with all their parents ("walls", "walls[2]", ...).
   mutable std::set<std::string, std::less<>> used;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "talus/io/number_format.h"
+#include "talus/scenario/mesh_shape_reader.h"
 #include "talus/shape/convex_hull.h"
 
 namespace talus {
@@ -30,22 +31,30 @@ struct PlacedPart {
   Vec3 offset;  ///< m, the part's local origin in the frame the user gave its vertices in
 };
 
-PlacedPart read_polyhedron(const ScenarioFile& f, const std::string& key) {
+// The corners as a list, `vertices = [[x, y, z], ...]`.
+std::vector<Vec3> read_vertex_list(const ScenarioFile& f, const std::string& key) {
   const std::size_t n = f.array_size(key + ".vertices");
   if (n < 4) f.fail(key + ".vertices", "a polyhedron needs at least 4 vertices [[x, y, z], ...], got " + std::to_string(n));
   std::vector<Vec3> v(n);
+  for (std::size_t k = 0; k < n; ++k) v[k] = f.get<Vec3>(key + ".vertices[" + std::to_string(k) + "]");
+  return v;
+}
+
+PlacedPart read_polyhedron(const ScenarioFile& f, const std::string& key) {
+  const bool from_mesh = f.has(key + ".mesh");
+  if (from_mesh && f.has(key + ".vertices")) f.fail(key + ".mesh", "give either vertices or mesh, not both");
+  if (!from_mesh) f.explain_if_unread(key + ".mesh_scale", "it scales a mesh, and this polyhedron gives vertices");
+  const std::string source = key + (from_mesh ? ".mesh" : ".vertices");
+  std::vector<Vec3> v = from_mesh ? read_mesh_vertices(f, key) : read_vertex_list(f, key);
   Vec3 centroid;
-  for (std::size_t k = 0; k < n; ++k) {
-    v[k] = f.get<Vec3>(key + ".vertices[" + std::to_string(k) + "]");
-    centroid += v[k];
-  }
-  centroid = centroid / static_cast<double>(n);
+  for (const Vec3& x : v) centroid += x;
+  centroid = centroid / static_cast<double>(v.size());
   for (Vec3& x : v) x -= centroid;
   ConvexHull hull;
   try {
     hull = build_convex_hull(v);
   } catch (const std::invalid_argument&) {
-    f.fail(key + ".vertices", "the vertices lie in a plane (or a line): a polyhedron needs volume");
+    f.fail(source, "the vertices lie in a plane (or a line): a polyhedron needs volume");
   }
   double inner = std::numeric_limits<double>::infinity();  // the centroid's distance to the nearest face
   for (const HullFace& face : hull.faces) inner = std::min(inner, face.offset);
