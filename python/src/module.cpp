@@ -7,5 +7,6 @@ PYBIND11_MODULE(_talus, m) {
   talus::python::bind_errors(m);
   pybind11::class_<talus::Snapshot> snapshot = talus::python::bind_snapshot(m);
   talus::python::bind_analyses(snapshot);
+  talus::python::bind_collapse(m, snapshot);
   talus::python::bind_stepped_run(m);
 }

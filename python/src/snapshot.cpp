@@ -7,7 +7,9 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.h"
+#include "talus/io/json_file.h"
 #include "talus/io/snapshot_file.h"
+#include "talus/io/snapshot_json.h"
 
 namespace talus::python {
 
@@ -114,7 +116,14 @@ py::class_<Snapshot> bind_snapshot(py::module_& m) {
       .def("contacts", &contacts)
       .def("save", [](const Snapshot& s, const std::filesystem::path& path) { io::write_snapshot_file(path, s); },
            py::arg("path"));
-  m.def("read_snapshot", &io::read_snapshot_file, py::arg("path"));
+  // A snapshot file, or the JSON of a dam break's states (state_before_gate.json,
+  // state_final.json: particles only).
+  m.def(
+      "read_snapshot",
+      [](const std::filesystem::path& path) {
+        return path.extension() == ".json" ? snapshot_from_json(io::read_json(path)) : io::read_snapshot_file(path);
+      },
+      py::arg("path"));
   m.def("snapshot_files", &io::snapshot_files, py::arg("results_dir"));
   return c;
 }

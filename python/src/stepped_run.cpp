@@ -121,7 +121,16 @@ void bind_stepped_run(py::module_& m) {
                                for (const auto& o : r.scenario().observers) names.push_back(o->name());
                                return names;
                              })
-      .def_property_readonly("scenario_toml", &PySteppedRun::scenario_toml);
+      .def_property_readonly("scenario_toml", &PySteppedRun::scenario_toml)
+      .def(
+          "measure_collapse",  // with the footprints of this World's shapes
+          [](const PySteppedRun& r, const Snapshot& initial, const Snapshot& final, double initial_length,
+             double box_length, double width, std::optional<double> particle_size, double pixel) {
+            return measure_collapse(initial, final, {initial_length, box_length, width, particle_size, pixel},
+                                    &r.world().shapes());
+          },
+          py::arg("initial"), py::arg("final"), py::arg("initial_length"), py::arg("box_length"), py::arg("width"),
+          py::arg("particle_size"), py::arg("pixel"));
   const std::pair<const char*, ParticleField> fields[] = {
       {"positions", ParticleField::position},   {"velocities", ParticleField::velocity},
       {"angular_velocities", ParticleField::angular_velocity},

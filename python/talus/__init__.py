@@ -9,6 +9,7 @@ arrays, and run the engine's analyses on it or on saved snapshot files.
 The reference is docs/guide/python.md.
 """
 from ._talus import BlowUpError, ScenarioError, Snapshot, __version__, read_snapshot, snapshot_files
+from .collapse import measure_collapse
 from .simulation import Simulation, load, resume
 
 __all__ = [
@@ -17,6 +18,7 @@ __all__ = [
     "Simulation",
     "Snapshot",
     "load",
+    "measure_collapse",
     "read_snapshot",
     "resume",
     "snapshot_files",
