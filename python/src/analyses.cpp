@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "numpy_values.h"
 #include "talus/analysis/coarse_grain.h"
 #include "talus/analysis/fabric.h"
 #include "talus/analysis/force_network.h"
@@ -136,9 +137,9 @@ py::dict force_pdf(const Snapshot& s, int bins, const std::string& scale, double
     throw py::value_error(scale == "linear" ? "linear bins start at 0: give no min_ratio"
                                             : "scale must be \"linear\" or \"log\"");
   py::dict d;
-  d["edges"] = py::array_t<double>(pdf.edges.size(), pdf.edges.data());
-  d["centres"] = py::array_t<double>(pdf.centres.size(), pdf.centres.data());
-  d["density"] = py::array_t<double>(pdf.density.size(), pdf.density.data());
+  d["edges"] = to_numpy(pdf.edges);
+  d["centres"] = to_numpy(pdf.centres);
+  d["density"] = to_numpy(pdf.density);
   d["mean_force"] = pdf.mean_force;
   d["samples"] = pdf.samples;
   d["outside"] = pdf.outside;
@@ -168,9 +169,9 @@ py::dict fabric_histogram(const Snapshot& s, int bins, bool merge_pairs) {
   if (bins < 1) throw py::value_error("bins must be at least 1");
   const FabricHistogram h = fabric_angle_histogram(s, bins, pair_points(merge_pairs));
   py::dict d;
-  d["edges"] = py::array_t<double>(h.edges.size(), h.edges.data());
-  d["centres"] = py::array_t<double>(h.centres.size(), h.centres.data());
-  d["density"] = py::array_t<double>(h.density.size(), h.density.data());
+  d["edges"] = to_numpy(h.edges);
+  d["centres"] = to_numpy(h.centres);
+  d["density"] = to_numpy(h.density);
   d["samples"] = h.samples;
   return d;
 }
@@ -179,12 +180,19 @@ py::dict fabric_histogram(const Snapshot& s, int bins, bool merge_pairs) {
 
 void bind_analyses(py::class_<Snapshot>& c) {
   c.def("coarse_grain", &coarse_grain_fields, py::arg("grid"), py::arg("width"), py::arg("function") = "gaussian",
-        py::arg("cutoff") = py::none())
+        py::arg("cutoff") = py::none(),
+        "Fields of Weinhart et al. 2012, Sect. 3 on grid {axis: (lo, hi, n)}: density, momentum, velocity, "
+        "stresses (Pa, compression positive), boundary_force; Gaussian of std width cut at cutoff (3 width), "
+        "or Lucy of cutoff width.")
       .def("force_pdf", &force_pdf, py::arg("bins") = 50, py::arg("scale") = "linear", py::arg("min_ratio") = 0.0,
-           py::arg("max_ratio") = 0.0, py::arg("merge_pairs") = false, py::arg("include_walls") = false)
-      .def("fabric_tensor", &fabric, py::arg("merge_pairs") = false)
-      .def("fabric_xz", &fabric_in_xz, py::arg("merge_pairs") = false)
-      .def("fabric_histogram", &fabric_histogram, py::arg("bins") = 36, py::arg("merge_pairs") = false);
+           py::arg("max_ratio") = 0.0, py::arg("merge_pairs") = false, py::arg("include_walls") = false,
+           "PDF of F / <F> over the contact points, on linear or log bins (Huet et al. 2021, Fig. 15).")
+      .def("fabric_tensor", &fabric, py::arg("merge_pairs") = false,
+           "<n n> of the unit branch vectors of particle contacts (3 x 3, trace 1).")
+      .def("fabric_xz", &fabric_in_xz, py::arg("merge_pairs") = false,
+           "The fabric in the xz plane: xx, xz, zz, anisotropy, direction (Huet et al. 2021, Figs. 16-17).")
+      .def("fabric_histogram", &fabric_histogram, py::arg("bins") = 36, py::arg("merge_pairs") = false,
+           "Density of the branch vectors' angle to x in the xz plane over [0, pi).");
 }
 
 }  // namespace talus::python

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "numpy_values.h"
 #include "talus/analysis/collapse_centre_of_mass.h"
 #include "talus/analysis/collapse_footprint.h"
 #include "talus/analysis/collapse_speed.h"
@@ -16,12 +17,6 @@
 namespace talus::python {
 
 namespace {
-
-py::array_t<double> vec3(const Vec3& v) { return py::array_t<double>(3, &v.x); }
-
-py::array_t<double> array(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
 
 // Footprints of the snapshot's particles: their shapes' parts when the shapes are known, else
 // each one's bounding sphere (exact for spheres, larger than any other shape).
@@ -35,8 +30,8 @@ py::dict height_dict(const collapse::HeightProfile& h) {
   d["q1"] = h.q1;
   d["median"] = h.median;
   d["q3"] = h.q3;
-  d["y"] = array(h.y);
-  d["h"] = array(h.h);
+  d["y"] = to_numpy(h.y);
+  d["h"] = to_numpy(h.h);
   return d;
 }
 
@@ -69,9 +64,9 @@ py::dict measure_collapse(const Snapshot& initial, const Snapshot& final, const 
   d["height_ratio"] = m.height_ratio;
   d["height_ratio_low"] = m.height_ratio_low;
   d["height_ratio_high"] = m.height_ratio_high;
-  d["com_initial"] = vec3(m.centre_of_mass.initial);
-  d["com_final"] = vec3(m.centre_of_mass.final);
-  d["com_displacement"] = vec3(m.centre_of_mass.displacement);
+  d["com_initial"] = to_numpy(m.centre_of_mass.initial);
+  d["com_final"] = to_numpy(m.centre_of_mass.final);
+  d["com_displacement"] = to_numpy(m.centre_of_mass.displacement);
   d["com_ratio"] = m.centre_ratio;
   d["regime"] = collapse::to_string(m.regime.regime);
   d["displaced_particles"] = m.regime.displaced;
@@ -79,8 +74,8 @@ py::dict measure_collapse(const Snapshot& initial, const Snapshot& final, const 
   d["particle_size"] = setup.particle_size;
   d["initial_height_profile"] = height_dict(m.initial_height);
   d["final_height_profile"] = height_dict(m.final_height);
-  d["runout_profile"] = py::dict(py::arg("x") = array(m.runout.profile.x),
-                                 py::arg("intensity") = array(m.runout.profile.intensity));
+  d["runout_profile"] = py::dict(py::arg("x") = to_numpy(m.runout.profile.x),
+                                 py::arg("intensity") = to_numpy(m.runout.profile.intensity));
   return d;
 }
 
@@ -99,7 +94,7 @@ void bind_collapse(py::module_& m, py::class_<Snapshot>& snapshot) {
              const collapse::MeanSpeeds v = collapse::mean_speeds(s);
              return py::dict(py::arg("translational") = v.translational, py::arg("angular") = v.angular);
            })
-      .def("centre_of_mass", [](const Snapshot& s) { return vec3(collapse::centre_of_mass(s)); });
+      .def("centre_of_mass", [](const Snapshot& s) { return to_numpy(collapse::centre_of_mass(s)); });
 }
 
 }  // namespace talus::python

@@ -7,6 +7,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.h"
+#include "numpy_values.h"
 #include "talus/io/json_file.h"
 #include "talus/io/snapshot_file.h"
 #include "talus/io/snapshot_json.h"
@@ -61,15 +62,6 @@ py::array_t<double> orientations(const Snapshot& s) {
   return a;
 }
 
-py::array_t<double> vec3(const Vec3& v) {
-  py::array_t<double> a(3);
-  auto out = a.mutable_unchecked<1>();
-  out(0) = v.x;
-  out(1) = v.y;
-  out(2) = v.z;
-  return a;
-}
-
 // Every contact point: particles i and j by global id (j = -1 against a wall, `wall` naming
 // it, -1 otherwise), the force on i split along the normal (pointing from j or the wall
 // towards i) and across it.
@@ -95,9 +87,9 @@ py::dict contacts(const Snapshot& s) {
 py::class_<Snapshot> bind_snapshot(py::module_& m) {
   py::class_<Snapshot> c(m, "Snapshot", "Particles and contacts at one instant; arrays are copies in global id order.");
   c.def_readonly("time", &Snapshot::time, "s")
-      .def_property_readonly("gravity", [](const Snapshot& s) { return vec3(s.gravity); }, "m/s^2")
-      .def_property_readonly("domain_min", [](const Snapshot& s) { return vec3(s.domain_min); }, "m")
-      .def_property_readonly("domain_max", [](const Snapshot& s) { return vec3(s.domain_max); }, "m")
+      .def_property_readonly("gravity", [](const Snapshot& s) { return to_numpy(s.gravity); }, "m/s^2")
+      .def_property_readonly("domain_min", [](const Snapshot& s) { return to_numpy(s.domain_min); }, "m")
+      .def_property_readonly("domain_max", [](const Snapshot& s) { return to_numpy(s.domain_max); }, "m")
       .def_property_readonly("periodic",
                              [](const Snapshot& s) { return std::vector<bool>(s.periodic, s.periodic + 3); })
       .def_property_readonly("particle_count", [](const Snapshot& s) { return s.particles.size(); })
@@ -113,7 +105,9 @@ py::class_<Snapshot> bind_snapshot(py::module_& m) {
       .def_property_readonly("angular_velocities", &particle_vectors<&ParticleRecord::angular_velocity>,
                              "rad/s, world frame")
       .def_property_readonly("orientations", &orientations, "w, x, y, z: body to world")
-      .def("contacts", &contacts)
+      .def("contacts", &contacts,
+           "Every contact point: i, j (global ids; j = -1 for a wall), wall, point, normal (from j towards i), "
+           "force, normal_force, tangential_force (N, on i), overlap.")
       .def("save", [](const Snapshot& s, const std::filesystem::path& path) { io::write_snapshot_file(path, s); },
            py::arg("path"));
   // A snapshot file, or the JSON of a dam break's states (state_before_gate.json,
