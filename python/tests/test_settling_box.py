@@ -37,7 +37,7 @@ def test_particle_arrays(settled):
     np.testing.assert_array_equal(settled.radii, RADIUS)
     np.testing.assert_allclose(settled.masses, DENSITY * 4 / 3 * math.pi * RADIUS**3, rtol=1e-14)
     np.testing.assert_allclose(np.linalg.norm(settled.orientations, axis=1), 1, rtol=1e-12)
-    # Inside the box, and bounded by it: no grain more than a few per cent of a radius into a wall.
+    # Inside the box: no grain more than a tenth of a radius into a wall.
     assert (settled.positions > RADIUS * 0.9).all() and (settled.positions < np.array(BOX) - RADIUS * 0.9).all()
     assert settled.wall_names == ["x-", "x+", "y-", "y+", "floor", "top"]
 
