@@ -8,6 +8,7 @@ packages=(
   libtomlplusplus-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libqhull-dev
   libhdf5-dev
   python3 python3-numpy python3-scipy python3-matplotlib
+  pybind11-dev python3-dev python3-pytest  # the talus Python module (python/)
   python3-vtk9
   openmpi-bin libopenmpi-dev python3-mpi4py
 )

@@ -17,10 +17,13 @@
 #include "talus/io/results_dir.h"
 #include "talus/io/snapshot_file.h"
 #include "talus/io/vtk_output.h"
+#include "talus/scenario/batch_steps.h"
 #include "talus/scenario/blowup_guard.h"
 #include "talus/scenario/checkpoint_series.h"
 #include "talus/parallel/communicator.h"
 #include "talus/scenario/run_checkpoint.h"
+#include "talus/scenario/run_summary.h"
+#include "talus/scenario/run_timeseries.h"
 #include "talus/scenario/spread_run.h"
 
 namespace talus {
@@ -31,41 +34,6 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 
 volatile std::sig_atomic_t g_stop_requested = 0;
 extern "C" void request_stop(int) { g_stop_requested = 1; }
-
-std::vector<std::string> timeseries_columns(const World& world, LeavePolicy on_leave) {
-  std::vector<std::string> c = {"time", "step", "kinetic_translational", "kinetic_rotational", "elastic_normal",
-                                "elastic_tangential", "elastic_rolling", "gravitational", "kinetic_over_elastic",
-                                "contacts", "wall_contacts", "max_overlap_ratio", "max_speed", "mean_speed",
-                                "max_angular_speed"};
-  for (const Wall& w : world.walls()) {
-    c.push_back("force_" + w.name + "_x");
-    c.push_back("force_" + w.name + "_y");
-    c.push_back("force_" + w.name + "_z");
-  }
-  if (on_leave == LeavePolicy::remove) c.push_back("particles_left_domain");  // removed so far
-  return c;
-}
-
-std::vector<double> row_values(const World& world, const Diagnostics& d) {
-  std::vector<double> row = {d.time, static_cast<double>(world.step_count()), d.kinetic_translational,
-                             d.kinetic_rotational, d.elastic_normal, d.elastic_tangential, d.elastic_rolling,
-                             d.gravitational, d.elastic() > 0 ? d.kinetic() / d.elastic() : 0.0,
-                             static_cast<double>(d.contacts), static_cast<double>(d.wall_contacts),
-                             d.max_overlap_ratio, d.max_speed, d.mean_speed, d.max_angular_speed};
-  for (std::size_t w = 0; w < world.walls().size(); ++w) {
-    const Vec3 f = world.wall_force(w);
-    row.insert(row.end(), {f.x, f.y, f.z});
-  }
-  return row;
-}
-
-nlohmann::json diagnostics_json(const Diagnostics& d) {
-  return {{"kinetic_translational", d.kinetic_translational}, {"kinetic_rotational", d.kinetic_rotational},
-          {"elastic_normal", d.elastic_normal},               {"elastic_tangential", d.elastic_tangential},
-          {"elastic_rolling", d.elastic_rolling},             {"gravitational", d.gravitational},
-          {"max_overlap_ratio", d.max_overlap_ratio},         {"max_speed", d.max_speed},
-          {"mean_speed", d.mean_speed},                       {"max_angular_speed", d.max_angular_speed}};
-}
 
 class Progress {
  public:
@@ -141,7 +109,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   BlowUpGuard guard(run.on_leave);
   std::optional<BlowUp> blow_up;
   auto record_row = [&](const Diagnostics& d) {
-    std::vector<double> row = row_values(world, d);
+    std::vector<double> row = timeseries_row(world, d);
     if (run.on_leave == LeavePolicy::remove) row.push_back(static_cast<double>(guard.removed()));
     csv.row(std::span<const double>(row));
     loop.rows.insert(loop.rows.end(), row.begin(), row.end());
@@ -206,22 +174,15 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   if (spread) world.balance_ranks_by(run.balance);
   const std::uint64_t first_step = world.step_count();
   const double dt = world.settings().time_step;
-  // Steps run in batches (World::run closes one step and opens the next in one pass over
-  // memory), each ending at the first step where something below is due, as the loop's own
-  // tests decide it; 64 steps at most, so that progress and stop requests stay prompt.
+  // Each batch ends at the first step where something below is due, as the loop's own tests
+  // decide it (batch_steps.h).
   const auto batch_steps = [&] {
     double due = std::min({run.end_time, loop.next_output, loop.next_checkpoint}) - 0.5 * dt;
     if (vtk) due = std::min(due, loop.next_frame - 0.5 * dt);
     if (run.snapshot_interval > 0) due = std::min(due, loop.next_snapshot - 0.5 * dt);
     for (const Pouring& pour : sc.pours) due = std::min(due, pour.next_time());
     for (const auto& o : sc.observers) due = std::min(due, o->next_step_event(world));
-    std::uint64_t steps = 0;
-    for (double t = world.time(); steps < 64;) {
-      t += dt;  // as World::step advances its clock
-      ++steps;
-      if (t >= due) break;
-    }
-    return steps;
+    return steps_until(world.time(), dt, due);
   };
   while (!blow_up && world.time() < run.end_time - 0.5 * dt) {
     for (Pouring& pour : sc.pours) pour.pour_due(world);
@@ -277,47 +238,16 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   csv.close();
   outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  nlohmann::json summary;
-  summary["talus_version"] = TALUS_VERSION;
+  nlohmann::json summary = world_summary(sc, d);
   summary["stop_reason"] = outcome.stop_reason;
-  summary["final_time"] = world.time();
-  summary["steps"] = world.step_count();
-  summary["time_step"] = dt;
-  summary["particles"] = static_cast<std::uint64_t>(comm.sum(static_cast<double>(world.owned_count())));
-  summary["ranks"] = comm.size();
-  summary["contacts"] = d.contacts;
-  summary["wall_contacts"] = d.wall_contacts;
-  summary["energies"] = diagnostics_json(d);
   summary["wall_time"] = outcome.wall_seconds;
   const double steps_run = static_cast<double>(world.step_count() - first_step);
   summary["steps_per_second"] = outcome.wall_seconds > 0 ? steps_run / outcome.wall_seconds : 0.0;
-  summary["threads"] = omp_get_max_threads();
-  summary["neighbour_rebuilds"] = world.rebuilds();
-  if (spread) {
-    summary["particles_moved_between_ranks"] = comm.sum(static_cast<double>(world.particles_moved_between_ranks()));
-    const RankGrid& grid = world.rank_grid();
-    summary["slab_axis"] = std::string(1, "xyz"[grid.slab_axis]);
-    summary["processors"] = grid.counts();
-    summary["balance"] = grid.balance == RankGrid::Balance::count ? "count" : "neighbours";
-  }
-  // Where the wall time of rank 0 went, by phase of the step (s); the rest is output,
-  // analyses and the run loop.
-  nlohmann::json phases = nlohmann::json::object();
-  for (int k = 0; k < static_cast<int>(Phase::count); ++k)
-    phases[phase_name(static_cast<Phase>(k))] = world.timer().seconds(static_cast<Phase>(k));
-  summary["phase_seconds"] = phases;
-  summary["derived"] = sc.derived;
   summary["checkpoints"] = {{"written", checkpoints.written()},
                             {"latest", CheckpointSeries::latest(opt.out).string()},
                             {"last_bytes", checkpoints.last_bytes()},
                             {"wall_time", checkpoint_seconds}};
   if (opt.restart) summary["restarted_from"] = {{"checkpoint", opt.restart_source}, {"step", first_step}};
-  nlohmann::json walls = nlohmann::json::object();
-  for (std::size_t w = 0; w < world.walls().size(); ++w) {
-    const Vec3 f = world.wall_force(w);
-    walls[world.walls()[w].name] = {f.x, f.y, f.z};
-  }
-  summary["wall_forces"] = walls;
   summary["particles_left_domain"] = guard.removed();
   if (blow_up) {
     // No study measures a broken state; the record says what broke, and no NaN or infinity of
