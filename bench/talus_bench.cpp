@@ -61,6 +61,7 @@
 #include "chute_timing.h"
 #include "cross_pile.h"
 #include "guard_cost.h"
+#include "load_average.h"
 #include "proc_memory.h"
 
 namespace fs = std::filesystem;
@@ -146,16 +147,6 @@ std::vector<ChuteCase> cases(const Options& o) {
 }
 
 std::uint64_t steps_of(const Options& o, const ChuteCase& c) { return c.name == "chute4k" ? o.steps4k : o.steps32k; }
-
-// 1-minute load average: other jobs on the machine inflate the timings, the 2-thread ones most.
-double load_average() {
-  double l = 0;
-  if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
-    if (std::fscanf(f, "%lf", &l) != 1) l = 0;
-    std::fclose(f);
-  }
-  return l;
-}
 
 void metric(const std::string& name, double value, const char* unit) {
   std::printf("METRIC %s %.6g %s\n", name.c_str(), value, unit);
