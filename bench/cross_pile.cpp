@@ -1,20 +1,15 @@
 #include "cross_pile.h"
 
 #include <omp.h>
-#include <x86intrin.h>
 
-#include <algorithm>
-#include <array>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <memory>
-#include <string>
 
 #include "chute_state.h"
+#include "load_average.h"
+#include "pile_timing.h"
 #include "talus/scenario/cross_box.h"
-#include "talus/world/composite_stats.h"
 #include "talus/world/world.h"
 
 namespace talus::bench {
@@ -70,82 +65,6 @@ std::unique_ptr<World> load_or_settle(const CrossPileOptions& o, double* seconds
   return load_state(make_cross_box_world(pile_setup(o)), file);
 }
 
-double process_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-struct Timing {
-  double wall = 1e300;  ///< fastest of the repetitions, us per particle-step
-  double cpu = 1e300;   ///< process CPU time of that repetition, us per particle-step
-};
-
-// Fastest of o.reps runs of o.steps steps on 1 and on 2 threads, the two taking turns within
-// each repetition so that both see the same machine (its speed drifts by tens of per cent over
-// a minute). On one thread the CPU time is what the step costs when other jobs keep the thread
-// waiting for a core.
-std::array<Timing, 2> time_one_and_two_threads(World& w, const CrossPileOptions& o) {
-  omp_set_num_threads(1);
-  w.run(200);
-  std::array<Timing, 2> best;
-  for (int r = 0; r < o.reps; ++r) {
-    for (int threads = 1; threads <= 2; ++threads) {
-      omp_set_num_threads(threads);
-      const double cpu0 = process_cpu_seconds();
-      const auto start = Clock::now();
-      w.run(o.steps);
-      const double s = std::chrono::duration<double>(Clock::now() - start).count();
-      const double per = 1e6 / static_cast<double>(o.steps * w.owned_count());
-      Timing& b = best[threads - 1];
-      if (s * per < b.wall) b = {s * per, (process_cpu_seconds() - cpu0) * per};
-    }
-  }
-  return best;
-}
-
-double load_average() {
-  double l = 0;
-  if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
-    if (std::fscanf(f, "%lf", &l) != 1) l = 0;
-    std::fclose(f);
-  }
-  return l;
-}
-
-// One thread, counters on: part-pair tests per particle-step and where the time goes.
-void profile(World& w, const CrossPileOptions& o, const std::string& prefix,
-             void (*metric)(const char*, double, const char*)) {
-  omp_set_num_threads(1);
-  w.run(50);
-  w.timer_mutable().reset();
-  reset_composite_stats();
-  set_composite_stats_enabled(true);
-  const std::uint64_t tsc0 = __rdtsc();
-  const auto start = Clock::now();
-  w.run(o.steps);
-  const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-  const double tsc_rate = static_cast<double>(__rdtsc() - tsc0) / wall;  // ticks per second
-  set_composite_stats_enabled(false);
-  const CompositeStats st = composite_stats_total();
-  const double ps = static_cast<double>(o.steps * w.owned_count());
-  auto m = [&](const char* name, double v, const char* unit) { metric((prefix + name).c_str(), v, unit); };
-  m("_body_pairs_per_particle_step", st.body_pairs / ps, "count");  // bounding spheres overlap
-  m("_part_pair_tests_per_particle_step", st.part_pairs / ps, "count");  // past the body-box cull
-  m("_narrow_phase_per_particle_step", st.narrow / ps, "count");
-  const PhaseTimer& t = w.timer();
-  const double narrow = st.narrow_ticks / tsc_rate, force = st.force_ticks / tsc_rate;
-  const double composite = st.total_ticks / tsc_rate;
-  // Broad phase: list rebuilds, the bounding-sphere loop and the capsule culls with part placing.
-  const double broad = t.seconds(Phase::neighbors) + t.seconds(Phase::pair_forces) - narrow - force;
-  m("_share_broad_phase", 100 * broad / wall, "%");
-  m("_share_narrow_phase", 100 * narrow / wall, "%");
-  m("_share_force_model", 100 * force / wall, "%");
-  m("_share_walls", 100 * t.seconds(Phase::wall_forces) / wall, "%");
-  m("_share_integrate", 100 * t.seconds(Phase::integrate) / wall, "%");
-  m("_share_cull_in_pairs", 100 * (composite - narrow - force) / wall, "%");
-}
-
 }  // namespace
 
 void run_cross_pile(const CrossPileOptions& o, void (*metric)(const char*, double, const char*)) {
@@ -161,12 +80,12 @@ void run_cross_pile(const CrossPileOptions& o, void (*metric)(const char*, doubl
   metric("crosspile_contacts_per_particle", 2.0 * static_cast<double>(settled.contacts) / n, "count");
   metric("crosspile_wall_contacts_per_particle", static_cast<double>(settled.wall_contacts) / n, "count");
   metric("crosspile_static_max_speed", settled.max_speed, "m/s");
-  const auto [s1, s2] = time_one_and_two_threads(*w, o);
+  const auto [s1, s2] = time_one_and_two_threads(*w, o.steps, o.reps);
   metric("crosspile_static_1t", s1.wall, "us");
   metric("crosspile_static_1t_cpu", s1.cpu, "us");
   metric("crosspile_static_2t", s2.wall, "us");
   metric("crosspile_static_speedup_2t", s1.wall / s2.wall, "x");
-  profile(*w, o, "crosspile_static", metric);
+  profile_pile(*w, o.steps, "crosspile_static", metric);
   if (o.static_only) return;
   // Flowing: the x+ wall goes, the pile slumps out of the box.
   Wall& side = w->walls_mutable()[1];
@@ -175,14 +94,14 @@ void run_cross_pile(const CrossPileOptions& o, void (*metric)(const char*, doubl
   omp_set_num_threads(threads);
   w->run(20000);  // 0.05 s: the front is moving
   metric("crosspile_flow_mean_speed", w->diagnostics().mean_speed, "m/s");
-  const auto [f1, f2] = time_one_and_two_threads(*w, o);
+  const auto [f1, f2] = time_one_and_two_threads(*w, o.steps, o.reps);
   metric("crosspile_flow_1t", f1.wall, "us");
   metric("crosspile_flow_1t_cpu", f1.cpu, "us");
   metric("crosspile_flow_2t", f2.wall, "us");
   metric("crosspile_flow_speedup_2t", f1.wall / f2.wall, "x");
   const Diagnostics flowing = w->diagnostics();
   metric("crosspile_flow_contacts_per_particle", 2.0 * static_cast<double>(flowing.contacts) / n, "count");
-  profile(*w, o, "crosspile_flow", metric);
+  profile_pile(*w, o.steps, "crosspile_flow", metric);
   metric("crosspile_loadavg", load_average(), "load");
   omp_set_num_threads(threads);
 }

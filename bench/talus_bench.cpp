@@ -3,12 +3,23 @@
 //
 //   talus-bench [--quick] [--cache DIR] [--only chute4k|chute32k]
 //               [--steps4k N] [--steps32k N] [--warmup N] [--reps N] [--flow-time T] [--gen-threads N]
+//   talus-bench --only crosspile [--crosses N] [--static-only] [--cache DIR]
+//   talus-bench --only shapes [--shape NAME] [--shape-count N] [--steps N] [--reps N] [--static-only]
+//               [--quick] [--cache DIR] [--gen-threads N]
 //   talus-bench --micro [--benchmark_filter=...]     Google Benchmark kernels instead
 //
 // Cases: chute4k = 20 x 10, H = 20 (4000 flowing on the rough base), chute32k = 40 x 40, H = 20
 // (32,000 flowing); both at 24 deg, lambda = 1, Weinhart contact, dt = t_c/50, flowed for 30
 // time units (--flow-time) once and cached in DIR (default <dir of this executable>/bench-cache/). --quick
 // replaces both by 20 x 10, H = 10 chutes flowed 1 time unit, with small step counts (CI smoke).
+// Opt-in cases, each settling piles for minutes before its first run (then cached in DIR):
+// crosspile = 2000 crosses of Huet et al. 2021 (bench/cross_pile.h); shapes = 1000 icosahedra,
+// 1000 hexapods and 1000 tetrapods (bench/shape_pile_cases.h), each settled for a fixed time
+// and timed static and flowing (x+ wall removed) as the cross pile, both states cached, prefix
+// shapes_<case>_: --shape picks one case, --steps and --reps (default 500 and 3) the timing,
+// --shape-count the bodies per pile, --gen-threads the threads that generate the states; --quick
+// there is a smoke run (200 bodies, a tenth of the settling and flow times, 100 steps, one
+// repetition).
 //
 // Definitions:
 //  - "particles" are all owned particles, flowing + fixed base: the figure per particle-step
@@ -39,6 +50,12 @@
 //    run loop makes after every batch of at most 64 steps, over one time step, fastest of 20
 //    batches each followed by a scan (bench/guard_cost.h); a step pays at most 1/64 of it
 //    between outputs (1/25 inside the chute's averaging window, where snapshots end batches).
+//  - shapes_<case>_{static,flow}_{1t,2t}: as X_1t, X_2t for one pile state loaded from the cache
+//    and warmed up for 2000 steps (the fastest of --reps, after 200 untimed steps); _1t_cpu,
+//    _speedup_2t and the profile (_share_*, part-pair tests per particle-step) as crosspile_*;
+//    _contacts_per_particle counts contact points (a face contact is up to 4),
+//    _touching_per_particle the bodies each body touches. A line per figure,
+//    "shapes <case>_<state>_<n>t  us/particle-step = ...", sums them up at the end.
 //  - cg_*_over_step: coarse graining one snapshot of the chute4k state (Weinhart et al. 2012,
 //    Sect. 3; Gaussian, w = 0.25 d) on a 1D depth grid of 200 points or a 3D grid of 40 x 20 x 40,
 //    divided by the cost of one time step, both on one thread; cg_snapshot_over_step is
@@ -61,7 +78,9 @@
 #include "chute_timing.h"
 #include "cross_pile.h"
 #include "guard_cost.h"
+#include "load_average.h"
 #include "proc_memory.h"
+#include "shape_pile.h"
 
 namespace fs = std::filesystem;
 using namespace talus;
@@ -79,14 +98,19 @@ struct Options {
   int gen_threads = 0;             ///< threads for cache generation; 0: omp_get_max_threads()
   std::string probe;               ///< internal: run the memory probe of this case and exit
   std::size_t crosses = 2000;      ///< crosses in the cross pile (--only crosspile)
-  bool static_only = false;        ///< cross pile: time the static state only
+  bool static_only = false;        ///< cross pile and shapes: time the static state only
+  std::string shape;               ///< --only shapes: one case; empty: all three
+  std::size_t shape_count = 0;     ///< bodies per shape pile; 0: 1000 (200 with --quick)
+  std::uint64_t shape_steps = 0;   ///< timed steps of a shape pile; 0: 500 (100 with --quick)
 };
 
 void usage() {
   std::fprintf(stderr,
-               "usage: talus-bench [--quick] [--cache DIR] [--only chute4k|chute32k|crosspile] [--steps4k N] [--steps32k N]\n"
+               "usage: talus-bench [--quick] [--cache DIR] [--only chute4k|chute32k|crosspile|shapes] [--steps4k N] [--steps32k N]\n"
                "                   [--crosses N] [--static-only] (the cross pile runs only with --only crosspile:\n"
                "                   it settles for minutes; --static-only skips its flowing state)\n"
+               "                   [--shape icosahedra|hexapods|tetrapods] [--shape-count N] [--steps N] (the shape\n"
+               "                   piles run only with --only shapes; they settle for minutes before the first run)\n"
                "                   [--warmup N] [--reps N] [--flow-time T] [--gen-threads N]\n"
                "       talus-bench --micro [Google Benchmark flags]\n");
 }
@@ -111,13 +135,23 @@ Options parse(int argc, char** argv) {
     else if (a == "--gen-threads") o.gen_threads = std::stoi(value());
     else if (a == "--crosses") o.crosses = static_cast<std::size_t>(std::stoul(value()));
     else if (a == "--static-only") o.static_only = true;
+    else if (a == "--shape") o.shape = value();
+    else if (a == "--shape-count") o.shape_count = static_cast<std::size_t>(std::stoul(value()));
+    else if (a == "--steps") o.shape_steps = std::stoull(value());
     else if (a == "--memory-probe") o.probe = value();
     else if (a == "--help" || a == "-h") { usage(); std::exit(0); }
     else throw std::invalid_argument("unknown argument " + a);
   }
-  if (!o.only.empty() && o.only != "chute4k" && o.only != "chute32k" && o.only != "crosspile")
-    throw std::invalid_argument("--only takes chute4k, chute32k or crosspile");
+  if (!o.only.empty() && o.only != "chute4k" && o.only != "chute32k" && o.only != "crosspile" && o.only != "shapes")
+    throw std::invalid_argument("--only takes chute4k, chute32k, crosspile or shapes");
   if (o.reps < 1) throw std::invalid_argument("--reps must be at least 1");
+  if (o.only != "shapes" && (!o.shape.empty() || o.shape_count || o.shape_steps))
+    throw std::invalid_argument("--shape, --shape-count and --steps go with --only shapes");
+  if (o.only == "shapes") {
+    if (!reps_set) o.reps = o.quick ? 1 : 3;
+    if (o.shape_count == 0) o.shape_count = o.quick ? 200 : 1000;
+    if (o.shape_steps == 0) o.shape_steps = o.quick ? 100 : 500;
+  }
   if (o.flow_time <= 0) o.flow_time = o.quick ? 1 : 30;
   if (o.gen_threads <= 0) o.gen_threads = omp_get_max_threads();
   if (o.quick) {
@@ -146,16 +180,6 @@ std::vector<ChuteCase> cases(const Options& o) {
 }
 
 std::uint64_t steps_of(const Options& o, const ChuteCase& c) { return c.name == "chute4k" ? o.steps4k : o.steps32k; }
-
-// 1-minute load average: other jobs on the machine inflate the timings, the 2-thread ones most.
-double load_average() {
-  double l = 0;
-  if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
-    if (std::fscanf(f, "%lf", &l) != 1) l = 0;
-    std::fclose(f);
-  }
-  return l;
-}
 
 void metric(const std::string& name, double value, const char* unit) {
   std::printf("METRIC %s %.6g %s\n", name.c_str(), value, unit);
@@ -320,6 +344,20 @@ int main(int argc, char** argv) {
       c.cache = o.cache;
       c.static_only = o.static_only;
       run_cross_pile(c, [](const char* name, double value, const char* unit) { metric(name, value, unit); });
+      return 0;
+    }
+    if (o.only == "shapes") {
+      ShapePileOptions s;
+      s.count = o.shape_count;
+      s.steps = o.shape_steps;
+      s.reps = o.reps;
+      s.static_only = o.static_only;
+      s.shape = o.shape;
+      s.time_scale = o.quick ? 0.1 : 1;
+      s.gen_threads = o.gen_threads;
+      s.cache = o.cache;
+      if (o.quick) metric("quick", 1, "bool");
+      run_shape_piles(s, [](const char* name, double value, const char* unit) { metric(name, value, unit); });
       return 0;
     }
     const std::vector<ChuteCase> chosen = cases(o);

@@ -1,14 +1,13 @@
 #include "talus/scenario/shape_reader.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
 
 #include "talus/io/number_format.h"
 #include "talus/scenario/mesh_shape_reader.h"
 #include "talus/shape/convex_hull.h"
+#include "talus/shape/named_shapes.h"
 
 namespace talus {
 
@@ -84,50 +83,24 @@ Quat read_orientation(const ScenarioFile& f, const std::string& key) {
   return Quat{v[0], v[1], v[2], v[3]}.normalized();
 }
 
-// The rotation taking z onto the unit vector `d`.
-Quat z_onto(const Vec3& d) {
-  const Vec3 z{0, 0, 1};
-  const Vec3 axis = cross(z, d);
-  const double s = norm(axis), c = dot(z, d);
-  if (s < 1e-12) return c > 0 ? Quat{} : Quat::from_axis_angle({1, 0, 0}, std::numbers::pi);
-  return Quat::from_axis_angle(axis / s, std::atan2(s, c));
-}
-
-// Named shapes of the granular literature, as composites of convex parts.
+// Named shapes of the granular literature, as composites of convex parts (named_shapes.h).
 CompositeShape read_named(const ScenarioFile& f, const std::string& key, const std::string& shape) {
-  CompositeShape c;
-  if (shape == "hexapod") {  // a 3-D cross: three square rods along x, y and z, crossing at their centres
+  if (shape == "hexapod") {
     const double length = f.get<double>(key + ".length", io::positive), width = f.get<double>(key + ".width", io::positive);
     if (width >= length) f.fail(key + ".width", "must be smaller than the length");
-    const double crust = crust_of(f, key, 0.5 * width);
-    const Vec3 h{0.5 * width, 0.5 * width, 0.5 * length};
-    c.add(make_box(h, crust), Pose{});
-    c.add(make_box(h, crust), Pose{{}, Quat::from_axis_angle({1, 0, 0}, 0.5 * std::numbers::pi)});
-    c.add(make_box(h, crust), Pose{{}, Quat::from_axis_angle({0, 1, 0}, 0.5 * std::numbers::pi)});
-  } else if (shape == "tetrapod") {  // four cylindrical arms from the centre to a tetrahedron's corners
+    return make_hexapod(length, width, crust_of(f, key, hexapod_smallest_half(width)));
+  }
+  if (shape == "tetrapod") {
     const double arm = f.get<double>(key + ".length", io::positive), radius = f.get<double>(key + ".radius", io::positive);
     if (radius >= arm) f.fail(key + ".radius", "must be smaller than the arm length");
-    const double crust = crust_of(f, key, std::min(radius, 0.5 * arm));
-    for (const Vec3& corner : {Vec3{1, 1, 1}, Vec3{1, -1, -1}, Vec3{-1, 1, -1}, Vec3{-1, -1, 1}}) {
-      const Vec3 d = corner / std::sqrt(3.0);
-      c.add(make_cylinder(radius, 0.5 * arm, crust), Pose{0.5 * arm * d, z_onto(d)});
-    }
-  } else if (shape == "stellated_octahedron") {  // two regular tetrahedra in the corners of one cube
-    const double a = 0.5 * f.get<double>(key + ".size", io::positive);  // the cube's half side
-    const std::vector<Vec3> first{{a, a, a}, {a, -a, -a}, {-a, a, -a}, {-a, -a, a}};
-    std::vector<Vec3> second;
-    for (const Vec3& v : first) second.push_back(-1.0 * v);
-    const double crust = crust_of(f, key, a / 3);  // a regular tetrahedron's inradius
-    c.add(make_polyhedron(first, crust), Pose{});
-    c.add(make_polyhedron(second, crust), Pose{});
-  } else {  // rod: a spherocylinder along z, `length` between its caps' centres
-    const double length = f.get<double>(key + ".length", io::positive), radius = f.get<double>(key + ".radius", io::positive);
-    const double crust = crust_of(f, key, std::min(radius, 0.5 * length));
-    c.add(make_cylinder(radius, 0.5 * length, crust), Pose{});
-    c.add(make_sphere(radius), Pose{{0, 0, 0.5 * length}, Quat{}});
-    c.add(make_sphere(radius), Pose{{0, 0, -0.5 * length}, Quat{}});
+    return make_tetrapod(arm, radius, crust_of(f, key, tetrapod_smallest_half(arm, radius)));
   }
-  return c;
+  if (shape == "stellated_octahedron") {
+    const double size = f.get<double>(key + ".size", io::positive);
+    return make_stellated_octahedron(size, crust_of(f, key, stellated_octahedron_smallest_half(size)));
+  }
+  const double length = f.get<double>(key + ".length", io::positive), radius = f.get<double>(key + ".radius", io::positive);
+  return make_rod(length, radius, crust_of(f, key, rod_smallest_half(length, radius)));
 }
 
 }  // namespace

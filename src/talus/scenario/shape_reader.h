@@ -9,8 +9,8 @@
 // Named shapes of the literature are composites too: "hexapod" (a 3-D cross: length, width),
 // "tetrapod" (four cylindrical arms: length, radius), "stellated_octahedron" (two tetrahedra in
 // one cube: size, the cube's side) and "rod" (a spherocylinder along z: length between the caps'
-// centres, radius). Every convex shape takes a `crust`, the rounding of GJK's crust method; its
-// default is 5 % of its smallest half dimension.
+// centres, radius), built by shape/named_shapes.h. Every convex shape takes a `crust`, the
+// rounding of GJK's crust method; its default is 5 % of its smallest half dimension.
 #include <optional>
 #include <string>
 
