@@ -258,6 +258,18 @@ TEST_F(VtkReadback, OutputWritesSeriesReadableWhileRunning) {
   EXPECT_EQ(r.at((d / "particles.pvd").string())["files"], json({"particles_000000.vtu", "particles_000001.vtu"}));
 }
 
+// A run of spheres writes no surface frames: a world's shape table always has its shape 0 (no
+// parts), and one-sphere composites have no surface beyond the particles' own glyphs.
+TEST_F(VtkReadback, SpheresAloneWriteNoShapeSeries) {
+  CompositeShape sphere;
+  sphere.add(make_sphere(0.01), Pose{});
+  VtkOutput out(dir_ / "vtk", {CompositeShape{}, sphere});
+  out.write_frame(snap_, walls_);
+  EXPECT_TRUE(fs::exists(dir_ / "vtk" / "particles.pvd"));
+  EXPECT_FALSE(fs::exists(dir_ / "vtk" / "shapes.pvd"));
+  EXPECT_FALSE(fs::exists(dir_ / "vtk" / "shapes_000000.vtu"));
+}
+
 // A frame in two pieces, as two ranks write it: rank 0 holds spheres 0 and 2 and the cross,
 // rank 1 sphere 1, whose contact with sphere 0 rank 1 lists, with sphere 0 as its partner
 // appended to the piece. Joined by the .pvtu, the frame has every particle once and every

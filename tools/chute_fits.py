@@ -6,8 +6,9 @@ and the shape factor alpha (Eqs. 54-55). Angles in degrees, lengths in particle 
 Each fit returns its parameters, their standard errors (square roots of the diagonal of the
 least-squares covariance, scaled by the residual variance) and err of Eq. 49.
 
-usage: chute_fits.py DIR [--lambda 1]   (reads DIR/hstop_intervals.csv and DIR/sweep_runs.csv or
-       DIR/hstop_runs.csv; writes DIR/fits.json and DIR/fits.md, the analogue of Tables 1-2)
+usage: chute_fits.py DIR   (reads DIR/hstop_intervals.csv and DIR/sweep_runs.csv or
+       DIR/hstop_runs.csv; fits each base roughness lambda found there; writes DIR/fits.json and
+       DIR/fits.md, the analogue of Tables 1-2)
 """
 import argparse
 import csv

@@ -15,7 +15,6 @@ Usage: dam_break_plots.py DIR [--snapshot-times T1,T2,...]
   DIR a hopper run      the pile's surface profile with the fitted flanks"""
 import argparse
 import json
-import subprocess
 import sys
 from pathlib import Path
 
@@ -126,30 +125,39 @@ def fabric_rose(folder: Path, tables, title: str) -> None:
 
 
 def snapshots(folder: Path, summary: dict, times) -> None:
-    """Huet et al. 2021, Figs. 6-8: side views of the column at chosen times after the gate opened."""
+    """Huet et al. 2021, Figs. 6-8: side views of the column at chosen times after the gate opened,
+    one strip sharing a window sized to the pile. Times past the run's last frame are left out
+    and the last frame closes the strip, so no frame is shown twice."""
     if not (folder / "vtk" / "particles.pvd").exists():
         print(f"{folder}: no vtk/ frames (set run.vtk_interval) - no snapshots", file=sys.stderr)
         return
+    sys.path.insert(0, str(TOOLS))
+    import render
+
     db = summary.get("dam_break", {})
     gate = db.get("gate_open_time", 0.0)
     if times is None:
         tau = db.get("time_scale", 0.0)
         times = [k * tau for k in (0, 1, 2, 3, 5, 8)]
-    out = folder / "snapshots"
-    out.mkdir(exist_ok=True)
-    frames = []
+    available = render.frame_times(folder)
+    shown = []
     for t in times:
-        target = out / f"side_t{t:.3f}s.png"
-        subprocess.run([sys.executable, str(TOOLS / "render.py"), str(folder), "--view", "side", "--time",
-                        str(gate + t), "--out", str(target)], check=True, stdout=subprocess.DEVNULL)
-        frames.append((t, target))
-        print(target)
-    # One strip, left to right in time, as the paper shows them.
-    fig, axes = plt.subplots(1, len(frames), figsize=(3.2 * len(frames), 2.6))
-    for ax, (t, target) in zip(np.atleast_1d(axes), frames):
-        ax.imshow(plt.imread(target))
-        ax.set_title(f"t = {t:.3g} s after the gate opened", fontsize=8)
-        ax.axis("off")
+        nearest = min(available, key=lambda f: abs(f - (gate + t)))
+        if nearest not in shown and gate + t <= available[-1] + 0.5 * (available[-1] - available[max(len(available) - 2, 0)]):
+            shown.append(nearest)
+    if available[-1] not in shown:
+        shown.append(available[-1])
+    window = render.pile_window(folder, shown, "side")
+    (x0, x1), (z0, z1) = window
+    panel_height = 2.2
+    panel_width = min(max(panel_height * (x1 - x0) / (z1 - z0), 1.2), 6.0)
+    fig, axes = plt.subplots(len(shown), 1, figsize=(panel_width + 0.6, panel_height * len(shown) + 0.4)) \
+        if panel_width > 3.5 else plt.subplots(1, len(shown), figsize=(panel_width * len(shown) + 0.6, panel_height + 0.6))
+    for ax, frame_time in zip(np.atleast_1d(axes), shown):
+        render.draw_on(ax, folder, frame_time, "side", window)
+        ax.set_title(f"t = {frame_time - gate:.3g} s after the gate opened", fontsize=8)
+        ax.tick_params(labelsize=6)
+    fig.tight_layout()
     save(fig, folder / "fig06_08_side_snapshots.png")
 
 

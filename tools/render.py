@@ -38,20 +38,45 @@ def read(path: Path):
     return reader.GetOutput()
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("results")
-    parser.add_argument("--time", type=float, default=float("inf"))
-    parser.add_argument("--view", choices=["side", "top"], default="side")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    vtk_dir = Path(args.results) / "vtk"
+def frame_times(results) -> list:
+    """Times of a run's VTK frames, in order."""
+    pvd = Path(results) / "vtk" / "particles.pvd"
+    return sorted(float(d.get("timestep")) for d in ET.parse(pvd).getroot().iter("DataSet"))
+
+
+def pile_window(results, times, view: str = "side"):
+    """The smallest window that holds the particles of every frame nearest to `times`, from the
+    box's near wall on: panels of one figure share it, sized to the pile rather than the box."""
+    vtk_dir = Path(results) / "vtk"
+    axes = (0, 2) if view == "side" else (0, 1)
+    lo, hi = np.full(2, np.inf), np.full(2, -np.inf)
+    for time in times:
+        grid = read(frame(vtk_dir / "particles.pvd", time)[1])
+        if not grid.GetNumberOfPoints():
+            continue
+        centres = vtk_to_numpy(grid.GetPoints().GetData())[:, axes]
+        radius = vtk_to_numpy(grid.GetPointData().GetArray("radius"))[:, None]
+        lo, hi = np.minimum(lo, (centres - radius).min(axis=0)), np.maximum(hi, (centres + radius).max(axis=0))
+    walls = vtk_dir / "walls.pvd"
+    if walls.exists():
+        wall_points = read(frame(walls, times[0])[1]).GetPoints()
+        if wall_points is not None and wall_points.GetNumberOfPoints():
+            lo = np.minimum(lo, vtk_to_numpy(wall_points.GetData())[:, axes].min(axis=0))
+    if not np.all(np.isfinite(lo + hi)):
+        return None
+    span = hi - lo
+    return (lo[0], hi[0] + 0.05 * span[0]), (lo[1], hi[1] + 0.1 * span[1])
+
+
+def draw_on(ax, results, time: float = float("inf"), view: str = "side", window=None):
+    """Draws the frame nearest to `time` on `ax`, within `window` ((x0, x1), (y0, y1); default: the
+    frame's pile); returns the frame's time and its largest speed."""
+    vtk_dir = Path(results) / "vtk"
     if not (vtk_dir / "particles.pvd").exists():
         sys.exit(f"render: no {vtk_dir}/particles.pvd (set run.vtk_interval in the scenario)")
-    t, particles_file = frame(vtk_dir / "particles.pvd", args.time)
-    axes = (0, 2) if args.view == "side" else (0, 1)
-    depth = 1 if args.view == "side" else 2  # far particles are drawn first
-    fig, ax = plt.subplots(figsize=(8, 5))
+    t, particles_file = frame(vtk_dir / "particles.pvd", time)
+    axes = (0, 2) if view == "side" else (0, 1)
+    depth = 1 if view == "side" else 2  # far particles are drawn first
     grid = read(particles_file)
     centres = vtk_to_numpy(grid.GetPoints().GetData()) if grid.GetNumberOfPoints() else np.zeros((0, 3))
     speed = np.linalg.norm(vtk_to_numpy(grid.GetPointData().GetArray("velocity")), axis=1) if len(centres) else np.zeros(0)
@@ -68,37 +93,46 @@ def main() -> None:
             ids = [mesh.GetCell(c).GetPointId(k) for k in range(mesh.GetCell(c).GetNumberOfPoints())]
             polygons.append(points[ids][:, axes])
             colours.append(cmap(cell_speed[c] / vmax))
-            order.append(points[ids][:, depth].mean() * (-1 if args.view == "side" else 1))
-        sequence = np.argsort(order)[::-1] if args.view == "side" else np.argsort(order)
+            order.append(points[ids][:, depth].mean() * (-1 if view == "side" else 1))
+        sequence = np.argsort(order)[::-1] if view == "side" else np.argsort(order)
         ax.add_collection(PolyCollection([polygons[k] for k in sequence], facecolors=[colours[k] for k in sequence],
                                          edgecolors="k", linewidths=0.1))
     spheres = [k for k in range(len(centres)) if shape_index[k] == 0]
     radius = vtk_to_numpy(grid.GetPointData().GetArray("radius")) if len(centres) else np.zeros(0)
     discs = [Circle((centres[k, axes[0]], centres[k, axes[1]]), radius[k]) for k in spheres]
     ax.add_collection(PatchCollection(discs, facecolors=[cmap(speed[k] / vmax) for k in spheres], edgecolors="k", linewidths=0.2))
-    walls = vtk_dir / "walls.pvd"
-    if walls.exists():
-        wall_grid = read(frame(walls, t)[1])
-        wall_points = vtk_to_numpy(wall_grid.GetPoints().GetData()) if wall_grid.GetNumberOfPoints() else np.zeros((0, 3))
-        if len(wall_points):
-            lo, hi = wall_points.min(axis=0), wall_points.max(axis=0)
-            ax.set_xlim(lo[axes[0]], hi[axes[0]])
-            upper = hi[axes[1]]
-            if args.view == "side" and len(centres):
-                # Walls may reach far above the pile (a gate pulled out of the box): frame the particles.
-                top = float((centres[:, axes[1]] + radius).max())
-                upper = min(upper, lo[axes[1]] + 1.3 * (top - lo[axes[1]]))
-            ax.set_ylim(lo[axes[1]], upper)
+    window = window or pile_window(results, [t], view)
+    if window is not None:
+        ax.set_xlim(*window[0])
+        ax.set_ylim(*window[1])
     else:
         ax.autoscale_view()
     ax.set_aspect("equal")
+    return t, vmax
+
+
+def draw(results, time: float = float("inf"), view: str = "side", out=None) -> Path:
+    """One frame as a PNG, framed on the pile."""
+    fig, ax = plt.subplots(figsize=(8, 5))
+    t, vmax = draw_on(ax, results, time, view)
     ax.set_xlabel("x (m)")
-    ax.set_ylabel("z (m)" if args.view == "side" else "y (m)")
+    ax.set_ylabel("z (m)" if view == "side" else "y (m)")
     ax.set_title(f"t = {t:.4g} s, coloured by speed (max {vmax:.3g} m/s)")
-    out = Path(args.out) if args.out else Path(args.results) / f"render_{args.view}_{t:.4g}.png"
+    out = Path(out) if out else Path(results) / f"render_{view}_{t:.4g}.png"
     fig.tight_layout()
     fig.savefig(out, dpi=130)
-    print(out)
+    plt.close(fig)
+    return out
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("results")
+    parser.add_argument("--time", type=float, default=float("inf"))
+    parser.add_argument("--view", choices=["side", "top"], default="side")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    print(draw(args.results, args.time, args.view, args.out))
 
 
 if __name__ == "__main__":

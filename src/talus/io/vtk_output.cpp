@@ -1,10 +1,12 @@
 #include "talus/io/vtk_output.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "talus/io/atomic_file.h"
 #include "talus/io/vtk_contacts.h"
 #include "talus/io/vtk_particles.h"
+#include "talus/io/vtk_shape_mesh.h"
 #include "talus/io/vtk_walls.h"
 
 namespace talus::io {
@@ -17,7 +19,11 @@ VtkOutput::VtkOutput(std::filesystem::path directory, std::vector<CompositeShape
       particles_(directory_ / "particles.pvd"),
       contacts_(directory_ / "contacts.pvd"),
       walls_(directory_ / "walls.pvd") {
-  if (!shapes_.empty()) shapes_series_.emplace(directory_ / "shapes.pvd");
+  // A table of spheres alone (the world's shape 0 has no parts) would give frames with no cells.
+  const bool any_surface = std::any_of(shapes_.begin(), shapes_.end(), [](const CompositeShape& s) {
+    return !s.parts.empty() && !is_plain_sphere(s);
+  });
+  if (any_surface) shapes_series_.emplace(directory_ / "shapes.pvd");
 }
 
 std::filesystem::path VtkOutput::frame_file(const char* stem, std::size_t frame, const char* extension) const {

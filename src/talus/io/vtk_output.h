@@ -1,8 +1,8 @@
 #pragma once
 // VtkOutput: everything ParaView needs for a run, one call per frame. In `directory`:
 //   particles_NNNNNN.vtu  centres + particle data          (series particles.pvd)
-//   shapes_NNNNNN.vtu     surfaces of non-spherical shapes (series shapes.pvd; only when a
-//                         shape table is given)
+//   shapes_NNNNNN.vtu     surfaces of non-spherical shapes (series shapes.pvd; only when the
+//                         shape table has one)
 //   contacts_NNNNNN.vtu   contact network                  (series contacts.pvd)
 //   walls_NNNNNN.vtu      walls at the frame's time        (series walls.pvd)
 // NNNNNN counts frames from 0. A run spread over ranks writes each frame of particles, shapes
@@ -26,7 +26,7 @@ namespace talus::io {
 class VtkOutput {
  public:
   // `directory` is created with the first frame. `shapes` is the scenario's shape table, indexed by
-  // ParticleRecord::shape; empty means spheres only (no shapes_*.vtu).
+  // ParticleRecord::shape; with no shape but spheres in it, no shapes_*.vtu are written.
   explicit VtkOutput(std::filesystem::path directory, std::vector<CompositeShape> shapes = {},
                      MeshResolution resolution = {});
 

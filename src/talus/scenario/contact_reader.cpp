@@ -108,12 +108,13 @@ DampingLaw damping_from_restitution_eq17(double kn, double e) {
 
 // The normal dashpot that makes the measured restitution e: solved with the clamp and the law
 // (head_on_impact.h), or Eq. (17) of Huet et al. 2021 literally when `restitution_damping` is
-// "eq11" (it ignores the clamp, so a clamped contact then rebounds faster than e).
+// "eq11" (the value names Eq. (11), the unclamped spring-dashpot's restitution that Eq. (17)
+// inverts; it ignores the clamp, so a clamped contact then rebounds faster than e).
 DampingLaw damping_for_restitution(const ChainReader& r, const ContactParams& c, double e, bool clamp) {
   const std::string formula = r.choice("restitution_damping", {"solved", "eq11"}).value_or("solved");
   if (formula == "eq11") {
     if (c.normal_law != normal_law_index<LinearNormal>())
-      r.file().fail(r.key_of("restitution_damping"), "\"eq11\" is the linear spring's formula (Huet et al. 2021, Eq. 11)");
+      r.file().fail(r.key_of("restitution_damping"), "\"eq11\" is the linear spring's formula (Huet et al. 2021, Eqs. 11 and 17)");
     return damping_from_restitution_eq17(c.normal_stiffness, e);
   }
   if (e >= 1) return {};
