@@ -68,6 +68,18 @@ def pile_window(results, times, view: str = "side"):
     return (lo[0], hi[0] + 0.05 * span[0]), (lo[1], hi[1] + 0.1 * span[1])
 
 
+def box_window(vtk_dir: Path, time: float, axes):
+    walls = vtk_dir / "walls.pvd"
+    if not walls.exists():
+        return None
+    points = read(frame(walls, time)[1]).GetPoints()
+    if points is None or not points.GetNumberOfPoints():
+        return None
+    xyz = vtk_to_numpy(points.GetData())
+    lo, hi = xyz.min(axis=0), xyz.max(axis=0)
+    return (lo[axes[0]], hi[axes[0]]), (lo[axes[1]], hi[axes[1]])
+
+
 def draw_on(ax, results, time: float = float("inf"), view: str = "side", window=None):
     """Draws the frame nearest to `time` on `ax`, within `window` ((x0, x1), (y0, y1); default: the
     frame's pile); returns the frame's time and its largest speed."""
@@ -101,7 +113,8 @@ def draw_on(ax, results, time: float = float("inf"), view: str = "side", window=
     radius = vtk_to_numpy(grid.GetPointData().GetArray("radius")) if len(centres) else np.zeros(0)
     discs = [Circle((centres[k, axes[0]], centres[k, axes[1]]), radius[k]) for k in spheres]
     ax.add_collection(PatchCollection(discs, facecolors=[cmap(speed[k] / vmax) for k in spheres], edgecolors="k", linewidths=0.2))
-    window = window or pile_window(results, [t], view)
+    # From the side, the frame is the pile's; from the top, the box's floor (its walls' extent).
+    window = window or (pile_window(results, [t], view) if view == "side" else box_window(vtk_dir, t, axes))
     if window is not None:
         ax.set_xlim(*window[0])
         ax.set_ylim(*window[1])
