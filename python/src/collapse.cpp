@@ -7,9 +7,11 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "json_to_python.h"
 #include "numpy_values.h"
 #include "talus/analysis/collapse_centre_of_mass.h"
 #include "talus/analysis/collapse_footprint.h"
+#include "talus/analysis/collapse_json.h"
 #include "talus/analysis/collapse_speed.h"
 #include "talus/analysis/collapse_summary.h"
 #include "talus/scenario/dam_break_observer.h"
@@ -22,17 +24,6 @@ namespace {
 // each one's bounding sphere (exact for spheres, larger than any other shape).
 std::vector<collapse::Footprint> footprints(const Snapshot& s, const std::vector<CompositeShape>* shapes) {
   return shapes ? particle_footprints(s, footprint_templates(*shapes)) : collapse::bounding_sphere_footprints(s);
-}
-
-py::dict height_dict(const collapse::HeightProfile& h) {
-  py::dict d;
-  d["mean"] = h.mean;
-  d["q1"] = h.q1;
-  d["median"] = h.median;
-  d["q3"] = h.q3;
-  d["y"] = to_numpy(h.y);
-  d["h"] = to_numpy(h.h);
-  return d;
 }
 
 }  // namespace
@@ -50,32 +41,14 @@ py::dict measure_collapse(const Snapshot& initial, const Snapshot& final, const 
       if (!p.fixed) setup.particle_size = std::max(setup.particle_size, 2 * p.radius);
   const collapse::CollapseMeasures m =
       collapse::measure_collapse(initial, footprints(initial, shapes), final, footprints(final, shapes), setup);
-  py::dict d;
-  d["H0"] = m.initial_height.mean;
-  d["final_height"] = m.final_height.mean;
-  d["runout"] = m.runout.nominal;
-  d["runout_low"] = m.runout.low;
-  d["runout_high"] = m.runout.high;
-  d["runout_reached_box_end"] = m.runout.reached_frame_end;
-  d["aspect_ratio"] = m.aspect_ratio;
-  d["runout_ratio"] = m.runout_ratio;
-  d["runout_ratio_low"] = m.runout_ratio_low;
-  d["runout_ratio_high"] = m.runout_ratio_high;
-  d["height_ratio"] = m.height_ratio;
-  d["height_ratio_low"] = m.height_ratio_low;
-  d["height_ratio_high"] = m.height_ratio_high;
-  d["com_initial"] = to_numpy(m.centre_of_mass.initial);
-  d["com_final"] = to_numpy(m.centre_of_mass.final);
-  d["com_displacement"] = to_numpy(m.centre_of_mass.displacement);
-  d["com_ratio"] = m.centre_ratio;
-  d["regime"] = collapse::to_string(m.regime.regime);
-  d["displaced_particles"] = m.regime.displaced;
-  d["displaced_fraction"] = m.regime.displaced_fraction;
+  // The names summary.json uses (collapse_json.h), with vectors and profiles as NumPy arrays.
+  py::dict d = to_python(collapse::collapse_measures_json(m));
   d["particle_size"] = setup.particle_size;
-  d["initial_height_profile"] = height_dict(m.initial_height);
-  d["final_height_profile"] = height_dict(m.final_height);
-  d["runout_profile"] = py::dict(py::arg("x") = to_numpy(m.runout.profile.x),
-                                 py::arg("intensity") = to_numpy(m.runout.profile.intensity));
+  const auto as_numpy = [](py::handle values) { return py::array_t<double, py::array::forcecast>::ensure(values); };
+  for (const char* key : {"com_initial", "com_final", "com_displacement"}) d[key] = as_numpy(d[key]);
+  for (const char* key : {"initial_height_profile", "final_height_profile"})
+    for (const char* array : {"y", "h"}) d[key][array] = as_numpy(d[key][array]);
+  for (const char* array : {"x", "intensity"}) d["runout_profile"][array] = as_numpy(d["runout_profile"][array]);
   return d;
 }
 

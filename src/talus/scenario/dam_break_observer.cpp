@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "talus/analysis/collapse_contacts.h"
+#include "talus/analysis/collapse_json.h"
 #include "talus/analysis/collapse_speed.h"
 #include "talus/analysis/collapse_summary.h"
 #include "talus/analysis/fabric.h"
@@ -180,33 +181,24 @@ void DamBreakObserver::measure(const Snapshot& final, double final_time, const s
   const collapse::CollapseMeasures m =
       collapse::measure_collapse(initial_, particle_footprints(initial_, templates_), final,
                                  particle_footprints(final, templates_), cs);
-  summary["H0"] = m.initial_height.mean;
-  summary["aspect_ratio"] = m.aspect_ratio;
-  summary["runout"] = m.runout.nominal;
-  summary["runout_low"] = m.runout.low;
-  summary["runout_high"] = m.runout.high;
-  summary["final_height"] = m.final_height.mean;
-  summary["final_height_q1"] = m.final_height.q1;
-  summary["final_height_q3"] = m.final_height.q3;
-  summary["com_displacement"] = m.centre_of_mass.displacement.x;
-  summary["regime"] = collapse::to_string(m.regime.regime);
+  // The headline figures at the top of summary.json, the rest under "dam_break".
+  const json measures = collapse::collapse_measures_json(m);
+  for (const char* key : {"H0", "aspect_ratio", "runout", "runout_low", "runout_high", "final_height", "regime"})
+    summary[key] = measures[key];
+  summary["final_height_q1"] = measures["final_height_profile"]["q1"];
+  summary["final_height_q3"] = measures["final_height_profile"]["q3"];
+  summary["com_displacement"] = measures["com_displacement"][0];
   summary["coordination_number"] = before_gate_["whole"]["coordination_points"];
   db["gate_open_time"] = gate_time_;
   db["collapse_duration"] = final_time - gate_time_;
   db["time_scale"] = collapse::collapse_time_scale(m.initial_height.mean, norm(initial_.gravity));
-  db["initial_height_q1"] = m.initial_height.q1;
-  db["initial_height_q3"] = m.initial_height.q3;
-  db["runout_ratio"] = m.runout_ratio;
-  db["runout_ratio_low"] = m.runout_ratio_low;
-  db["runout_ratio_high"] = m.runout_ratio_high;
-  db["height_ratio"] = m.height_ratio;
-  db["height_ratio_low"] = m.height_ratio_low;
-  db["height_ratio_high"] = m.height_ratio_high;
-  db["com_initial_x"] = m.centre_of_mass.initial.x;
-  db["com_ratio"] = m.centre_ratio;
-  db["runout_reached_box_end"] = m.runout.reached_frame_end;
-  db["displaced_particles"] = m.regime.displaced;
-  db["displaced_fraction"] = m.regime.displaced_fraction;
+  db["initial_height_q1"] = measures["initial_height_profile"]["q1"];
+  db["initial_height_q3"] = measures["initial_height_profile"]["q3"];
+  for (const char* key : {"runout_ratio", "runout_ratio_low", "runout_ratio_high", "height_ratio", "height_ratio_low",
+                          "height_ratio_high", "com_ratio", "runout_reached_box_end", "displaced_particles",
+                          "displaced_fraction"})
+    db[key] = measures[key];
+  db["com_initial_x"] = measures["com_initial"][0];
   db["particle_size"] = cs.particle_size;
   db["before_gate"] = before_gate_;
 
