@@ -38,7 +38,7 @@ class BlowUpGuard {
   explicit BlowUpGuard(LeavePolicy on_leave) : on_leave_(on_leave) {}
   // Checks the world's state. With LeavePolicy::remove the particles that left the domain are
   // removed (and counted) unless something worse is wrong. Returns what must stop the run.
-  // A distributed world's ranks all stop if one finds a fault (removals are refused there).
+  // A distributed world's ranks all stop if one finds a fault, and count removals over all ranks.
   std::optional<BlowUp> check(World& world);
   // Particles removed so far, this run and the runs it was restarted from.
   std::uint64_t removed() const { return removed_; }
