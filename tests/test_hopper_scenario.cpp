@@ -9,6 +9,7 @@
 
 #include "talus/io/input_error.h"
 #include "talus/scenario/scenario.h"
+#include "talus/world/wall_contacts.h"
 
 namespace talus {
 namespace {
@@ -28,6 +29,27 @@ TEST(HopperScenario, ExampleLoads) {
   // Table II gives t_c through k_n and e_n; the time step must resolve it (at least 10 steps).
   EXPECT_GE(sc.derived["steps_per_contact"].get<double>(), 10.0);
   EXPECT_EQ(sc.observers.size(), 1u);
+}
+
+// The insertion region reaches closer to the inclined hopper walls than a particle's radius:
+// insertion keeps every particle clear of them (a sphere started inside a wall leaves it at tens
+// of metres per second), for the spheres and for the tetrapods' bounding spheres.
+TEST(HopperScenario, InsertedParticlesStartClearOfTheWalls) {
+  for (const char* example : {"hopper.toml", "hopper_tetrapods.toml"}) {
+    io::ScenarioFile f = io::ScenarioFile::from_file(std::string(TALUS_SOURCE_DIR) + "/examples/" + example);
+    const Scenario sc = load_scenario(f);
+    const World& w = *sc.world;
+    const ParticleStore& p = w.particles();
+    std::size_t near_a_wall = 0;
+    for (std::size_t i = 0; i < p.owned; ++i)
+      for (const Wall& wall : w.walls()) {
+        const double d = dot(p.position[i] - wall.origin, wall.normal);
+        const bool faces = !wall.bounded || (d > 0 && wall_faces(wall, wall.origin, p.position[i], p.radius[i]));
+        if (faces) EXPECT_GE(d, p.radius[i]) << example << ": particle " << i << " cuts wall " << wall.name;
+        if (faces && d < 2 * p.radius[i]) ++near_a_wall;
+      }
+    EXPECT_GT(near_a_wall, 0u) << example << ": the region does reach the walls, so the test can fail";
+  }
 }
 
 TEST(HopperScenario, PlugMustNameAWall) {

@@ -79,5 +79,31 @@ TEST(Pouring, BatchesArriveWithoutOverlaps) {
   EXPECT_EQ(w.particles().owned, 60u);
 }
 
+// A pour region that starts below the floor's reach: no particle is poured into the floor.
+TEST(Pouring, KeepsClearOfWalls) {
+  WorldSettings s;
+  s.domain = {{0, 0, 0}, {0.05, 0.05, 0.2}};
+  s.time_step = 1e-5;
+  World w(s);
+  w.contacts().resize(1, 1);
+  const ContactParams c = testing::glass_contact(0.002, 2500, 0.5, 1.0);
+  w.contacts().set_pair(0, 0, c);
+  w.contacts().set_wall(0, 0, c);
+  Wall floor;
+  floor.normal = {0, 0, 1};
+  w.add_wall(floor);
+  PourSpec spec;
+  spec.density = 2500;
+  spec.radius_min = spec.radius_max = 0.002;
+  spec.region_lo = {0.005, 0.005, 0.0};  // centres drawn from z = 0 up: half would cut the floor
+  spec.region_hi = {0.045, 0.045, 0.008};
+  spec.total = 20;
+  spec.batch = 20;
+  spec.interval = 1;
+  Pouring pour(spec, 5);
+  EXPECT_GT(pour.pour_due(w), 0u);
+  for (std::size_t i = 0; i < w.particles().owned; ++i) EXPECT_GE(w.particles().position[i].z, 0.002) << i;
+}
+
 }  // namespace
 }  // namespace talus

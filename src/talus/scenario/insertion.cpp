@@ -88,14 +88,14 @@ void SphereOverlapIndex::insert(const PlacedSphere& s) {
 
 double insert_growing(SphereOverlapIndex& index, std::size_t count, const Vec3& lo, const Vec3& size, double growth,
                       const std::function<double(std::mt19937_64&)>& radius, std::mt19937_64& rng, double max_top,
-                      std::size_t max_attempts) {
+                      std::size_t max_attempts, const std::function<bool(const PlacedSphere&)>& blocked) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   double top = size.z;
   std::size_t placed = 0, failures = 0;
   while (placed < count) {
     const double r = radius(rng);
     const PlacedSphere s{{lo.x + size.x * unit(rng), lo.y + size.y * unit(rng), lo.z + top * unit(rng)}, r};
-    if (index.overlaps(s)) {
+    if (index.overlaps(s) || (blocked && blocked(s))) {
       top += growth;
       // Rejections in a row are counted whatever the growth: one too small to move the top
       // would never bring it to max_top.

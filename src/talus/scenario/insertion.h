@@ -37,11 +37,13 @@ class SphereOverlapIndex {
 };
 
 // Weinhart et al. 2012, Sect. 5: place `count` spheres at uniform random positions in the box
-// [lo, lo + (size.x, size.y, I)] starting with I = size.z; each rejected (overlapping) attempt
-// raises the top I by `growth`. Returns the final I. Throws std::runtime_error when I would
-// exceed `max_top`, or after `max_attempts` rejections in a row.
+// [lo, lo + (size.x, size.y, I)] starting with I = size.z; each rejected attempt (overlapping
+// a placed sphere, or one `blocked` refuses, e.g. cutting into a wall) raises the top I by
+// `growth`. Returns the final I. Throws std::runtime_error when I would exceed `max_top`, or
+// after `max_attempts` rejections in a row.
 double insert_growing(SphereOverlapIndex& index, std::size_t count, const Vec3& lo, const Vec3& size,
                       double growth, const std::function<double(std::mt19937_64&)>& radius, std::mt19937_64& rng,
-                      double max_top = 1e300, std::size_t max_attempts = 100000);
+                      double max_top = 1e300, std::size_t max_attempts = 100000,
+                      const std::function<bool(const PlacedSphere&)>& blocked = {});
 
 }  // namespace talus

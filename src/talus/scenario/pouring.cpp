@@ -5,6 +5,7 @@
 #include "talus/math/random_orientation.h"
 #include "talus/parallel/communicator.h"
 #include "talus/scenario/insertion.h"
+#include "talus/world/wall_clearance.h"
 
 namespace talus {
 
@@ -38,7 +39,7 @@ std::size_t Pouring::pour_due(World& world) {
     const double r = spec_.radius_min + (spec_.radius_max - spec_.radius_min) * unit(rng_);
     const Vec3 x{spec_.region_lo.x + size.x * unit(rng_), spec_.region_lo.y + size.y * unit(rng_),
                  spec_.region_lo.z + size.z * unit(rng_)};
-    if (index.overlaps({x, r})) continue;
+    if (index.overlaps({x, r}) || sphere_cuts_a_wall(world.walls(), world.time(), x, r)) continue;
     index.insert({x, r});
     ParticleInit init;
     if (spec_.rigid) {

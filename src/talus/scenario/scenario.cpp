@@ -20,6 +20,7 @@
 #include "talus/scenario/rigid_body_type.h"
 #include "talus/scenario/shape_reader.h"
 #include "talus/shape/convex_shape.h"
+#include "talus/world/wall_clearance.h"
 
 namespace talus {
 
@@ -430,7 +431,9 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
     try {
       insert_growing(index, count, lo, hi - lo, growth,
                      [&](std::mt19937_64& g) { return r_min + (r_max - r_min) * std::uniform_real_distribution<double>(0, 1)(g); },
-                     rng, domain.hi.z - lo.z);
+                     rng, domain.hi.z - lo.z, 100000, [&](const PlacedSphere& sp) {
+                       return sphere_cuts_a_wall(world->walls(), 0, sp.centre, sp.radius);
+                     });
     } catch (const std::runtime_error& e) {
       f.fail(key + ".count", std::string(e.what()) + "; enlarge the region or set growth");
     }
