@@ -142,7 +142,7 @@ def snapshots(folder: Path, summary: dict, times) -> None:
     available = render.frame_times(folder)
     shown = []
     for t in times:
-        nearest = min(available, key=lambda f: abs(f - (gate + t)))
+        nearest = next((f for f in available if f >= gate + t - 1e-9), available[-1])  # first frame at or after
         if nearest not in shown and gate + t <= available[-1] + 0.5 * (available[-1] - available[max(len(available) - 2, 0)]):
             shown.append(nearest)
     if available[-1] not in shown:
