@@ -114,6 +114,7 @@ TEST(BoxPairReuse, TurnPastTheReserveRunsAFullQuery) {
   ASSERT_TRUE(first_full);
   ASSERT_FALSE(first.separated);
   ASSERT_GT(budget.until, 0.0);
+  std::printf("reserve of the crossed pair: %.3g m\n", budget.until);
   const double dtheta = 2 * std::asin(budget.until / 8 / (2 * kRadius));
   budget = PartBudget{};
   int stored = -1, full_queries = 0, reused = 0;
