@@ -10,6 +10,7 @@
 #include "load_average.h"
 #include "pile_timing.h"
 #include "talus/scenario/cross_box.h"
+#include "talus/world/composite_stats.h"
 #include "talus/world/world.h"
 
 namespace talus::bench {
@@ -24,6 +25,7 @@ CrossBoxSetup pile_setup(const CrossPileOptions& o) {
   s.count = o.crosses;
   s.box = {0.2, 0.2, 0.05};     // 20 x 20 cm floor
   s.domain_hi = {1.0, 0.2, 1.0};  // room for the flow past x = 0.2 m
+  s.narrow_phase_reuse = o.narrow_phase_reuse;
   return s;
 }
 
@@ -86,6 +88,11 @@ void run_cross_pile(const CrossPileOptions& o, void (*metric)(const char*, doubl
   metric("crosspile_static_2t", s2.wall, "us");
   metric("crosspile_static_speedup_2t", s1.wall / s2.wall, "x");
   profile_pile(*w, o.steps, "crosspile_static", metric);
+  {
+    const CompositeStats st = composite_stats_total();  // of that profile run
+    const double q = static_cast<double>(st.box_full_queries + st.box_reused);
+    metric("crosspile_reuse_share", q > 0 ? st.box_reused / q : 0.0, "fraction");
+  }
   if (o.static_only) return;
   // Flowing: the x+ wall goes, the pile slumps out of the box.
   Wall& side = w->walls_mutable()[1];

@@ -13,6 +13,7 @@ struct CrossPileOptions {
   std::uint64_t steps = 1000;      ///< timed steps per thread count and state
   int reps = 8;                    ///< repetitions of each timing (the fastest is kept)
   bool static_only = false;        ///< skip the flowing state (quick comparisons)
+  bool narrow_phase_reuse = true;  ///< WorldSettings::narrow_phase_reuse (off: the A/B reference)
   double settle_speed = 3e-2;      ///< m/s: settled below this largest speed (surface crosses creep at 1-3 cm/s)
   double settle_time_limit = 1.5;  ///< s of simulated time
   std::filesystem::path cache;     ///< directory of the cached settled pile

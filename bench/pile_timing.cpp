@@ -59,6 +59,11 @@ void profile_pile(World& w, std::uint64_t steps, const std::string& prefix, Metr
   m("_body_pairs_per_particle_step", st.body_pairs / ps, "count");  // bounding spheres overlap
   m("_part_pair_tests_per_particle_step", st.part_pairs / ps, "count");  // past the body-box cull
   m("_narrow_phase_per_particle_step", st.narrow / ps, "count");
+  // Touching box part pairs served from their stored feature (box_pair_reuse.h), of all box
+  // part pairs that reached the narrow phase.
+  const double box_queries = static_cast<double>(st.box_full_queries + st.box_reused);
+  m("_reuse_share", box_queries > 0 ? st.box_reused / box_queries : 0.0, "fraction");
+  m("_full_box_queries_per_particle_step", st.box_full_queries / ps, "count");
   const PhaseTimer& t = w.timer();
   const double narrow = st.narrow_ticks / tsc_rate, force = st.force_ticks / tsc_rate;
   const double composite = st.total_ticks / tsc_rate;

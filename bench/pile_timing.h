@@ -25,8 +25,9 @@ std::array<PileTiming, 2> time_one_and_two_threads(World& w, std::uint64_t steps
 
 // `steps` steps on one thread with the counters on (after 50 untimed): prints <prefix> followed
 // by _body_pairs_per_particle_step, _part_pair_tests_per_particle_step,
-// _narrow_phase_per_particle_step and the _share_* of broad phase, narrow phase, force model,
-// walls, integration and the culls inside the pair loop.
+// _narrow_phase_per_particle_step, _reuse_share (box part pairs in the narrow phase served from
+// their stored feature), _full_box_queries_per_particle_step and the _share_* of broad phase,
+// narrow phase, force model, walls, integration and the culls inside the pair loop.
 void profile_pile(World& w, std::uint64_t steps, const std::string& prefix, MetricSink metric);
 
 }  // namespace talus::bench

@@ -99,6 +99,8 @@ struct Options {
   std::string probe;               ///< internal: run the memory probe of this case and exit
   std::size_t crosses = 2000;      ///< crosses in the cross pile (--only crosspile)
   bool static_only = false;        ///< cross pile and shapes: time the static state only
+  bool reps_given = false;         ///< --reps was given (the cross pile keeps its own 8 otherwise)
+  bool no_reuse = false;           ///< cross pile: contact.narrow_phase_reuse = false (A/B)
   std::string shape;               ///< --only shapes: one case; empty: all three
   std::size_t shape_count = 0;     ///< bodies per shape pile; 0: 1000 (200 with --quick)
   std::uint64_t shape_steps = 0;   ///< timed steps of a shape pile; 0: 500 (100 with --quick)
@@ -108,7 +110,8 @@ void usage() {
   std::fprintf(stderr,
                "usage: talus-bench [--quick] [--cache DIR] [--only chute4k|chute32k|crosspile|shapes] [--steps4k N] [--steps32k N]\n"
                "                   [--crosses N] [--static-only] (the cross pile runs only with --only crosspile:\n"
-               "                   it settles for minutes; --static-only skips its flowing state)\n"
+               "                   it settles for minutes; --static-only skips its flowing state; --steps N,\n"
+               "                   --reps N; --no-reuse turns narrow-phase reuse off)\n"
                "                   [--shape icosahedra|hexapods|tetrapods] [--shape-count N] [--steps N] (the shape\n"
                "                   piles run only with --only shapes; they settle for minutes before the first run)\n"
                "                   [--warmup N] [--reps N] [--flow-time T] [--gen-threads N]\n"
@@ -130,11 +133,12 @@ Options parse(int argc, char** argv) {
     else if (a == "--steps4k") { o.steps4k = std::stoull(value()); steps4k_set = true; }
     else if (a == "--steps32k") { o.steps32k = std::stoull(value()); steps32k_set = true; }
     else if (a == "--warmup") { o.warmup = std::stoull(value()); warmup_set = true; }
-    else if (a == "--reps") { o.reps = std::stoi(value()); reps_set = true; }
+    else if (a == "--reps") { o.reps = std::stoi(value()); reps_set = o.reps_given = true; }
     else if (a == "--flow-time") o.flow_time = std::stod(value());
     else if (a == "--gen-threads") o.gen_threads = std::stoi(value());
     else if (a == "--crosses") o.crosses = static_cast<std::size_t>(std::stoul(value()));
     else if (a == "--static-only") o.static_only = true;
+    else if (a == "--no-reuse") o.no_reuse = true;
     else if (a == "--shape") o.shape = value();
     else if (a == "--shape-count") o.shape_count = static_cast<std::size_t>(std::stoul(value()));
     else if (a == "--steps") o.shape_steps = std::stoull(value());
@@ -145,8 +149,11 @@ Options parse(int argc, char** argv) {
   if (!o.only.empty() && o.only != "chute4k" && o.only != "chute32k" && o.only != "crosspile" && o.only != "shapes")
     throw std::invalid_argument("--only takes chute4k, chute32k, crosspile or shapes");
   if (o.reps < 1) throw std::invalid_argument("--reps must be at least 1");
-  if (o.only != "shapes" && (!o.shape.empty() || o.shape_count || o.shape_steps))
-    throw std::invalid_argument("--shape, --shape-count and --steps go with --only shapes");
+  if (o.only != "shapes" && (!o.shape.empty() || o.shape_count))
+    throw std::invalid_argument("--shape and --shape-count go with --only shapes");
+  if (o.only != "shapes" && o.only != "crosspile" && o.shape_steps)
+    throw std::invalid_argument("--steps goes with --only shapes or crosspile");
+  if (o.only != "crosspile" && o.no_reuse) throw std::invalid_argument("--no-reuse goes with --only crosspile");
   if (o.only == "shapes") {
     if (!reps_set) o.reps = o.quick ? 1 : 3;
     if (o.shape_count == 0) o.shape_count = o.quick ? 200 : 1000;
@@ -343,6 +350,9 @@ int main(int argc, char** argv) {
       c.crosses = o.crosses;
       c.cache = o.cache;
       c.static_only = o.static_only;
+      c.narrow_phase_reuse = !o.no_reuse;
+      if (o.reps_given) c.reps = o.reps;
+      if (o.shape_steps) c.steps = o.shape_steps;
       run_cross_pile(c, [](const char* name, double value, const char* unit) { metric(name, value, unit); });
       return 0;
     }

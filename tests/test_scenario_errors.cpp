@@ -65,6 +65,12 @@ TEST(ScenarioErrors, UnknownKeyIsReportedWithSuggestion) {
   EXPECT_NE(e.find("contact.friction"), std::string::npos) << e;
 }
 
+TEST(ScenarioErrors, NarrowPhaseReuseIsABoolean) {
+  const std::string e = load_error(replace(kValid, "friction = 0.5", "friction = 0.5\nnarrow_phase_reuse = 3"));
+  EXPECT_EQ(e.rfind("case.toml:17: contact.narrow_phase_reuse", 0), 0u) << e;
+  EXPECT_EQ(load_error(replace(kValid, "friction = 0.5", "friction = 0.5\nnarrow_phase_reuse = false")), "");
+}
+
 // A key the reader knows but the chosen contact models do not read is said to be so, with why,
 // rather than reported as unknown.
 TEST(ScenarioErrors, KnownKeysTheModelsDoNotReadAreNamedAsSuch) {

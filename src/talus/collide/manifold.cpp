@@ -108,20 +108,30 @@ ContactManifold box_box_manifold(const OrientedBox& a, const OrientedBox& b, con
     for (double s : {1.0, -1.0}) {
       const Vec3 n = ref.axis[k] * s;
       const double w = dot(n, ref.centre) + ref.half[k];
+      // Each vertex's distance once (it is both ends of two edges). A plane that cuts nothing
+      // leaves the polygon as it is: no copy (the same points as clipping it would give).
+      double dist[kMaxClip];
+      bool cuts = false;
+      for (int q = 0; q < count; ++q) {
+        dist[q] = dot(n, poly[q].p) - w;
+        cuts = cuts || dist[q] > 0;
+      }
+      ++plane;
+      if (!cuts) continue;
       int kept = 0;
       for (int q = 0; q < count; ++q) {
+        const int r = q + 1 == count ? 0 : q + 1;  // no integer division in the hot loop
         const ClipVertex& pa = poly[q];
-        const ClipVertex& pb = poly[q + 1 == count ? 0 : q + 1];  // no integer division in the hot loop
-        const double da = dot(n, pa.p) - w, db = dot(n, pb.p) - w;
+        const ClipVertex& pb = poly[r];
+        const double da = dist[q], db = dist[r];
         if (da <= 0 && kept < kMaxClip) next[kept++] = pa;
         if (((da < 0 && db > 0) || (da > 0 && db < 0)) && kept < kMaxClip) {
           const double t = da / (da - db);
-          next[kept++] = {pa.p + (pb.p - pa.p) * t, pa.edges & pb.edges, (pa.planes & pb.planes) | (1u << plane)};
+          next[kept++] = {pa.p + (pb.p - pa.p) * t, pa.edges & pb.edges, (pa.planes & pb.planes) | (1u << (plane - 1))};
         }
       }
       std::swap(poly, next);
       count = kept;
-      ++plane;
     }
   }
 

@@ -23,6 +23,7 @@ struct CrossBoxSetup {
   double insert_clearance = 2e-4;///< m between placed crosses
   std::uint64_t seed = 1;
   bool manifold = true;          ///< up to 4 points per face contact (k/n each)
+  bool narrow_phase_reuse = true;///< WorldSettings::narrow_phase_reuse
 };
 
 RigidBodyType huet_cross_type(double crust = 1e-4);

@@ -294,6 +294,7 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
   if (!chute) {
     ws.domain = dam_break ? dam_break_domain(dam) : read_domain(f);
     ws.contact_manifold = f.get_or<bool>("contact.manifold", false);
+    ws.narrow_phase_reuse = f.get_or<bool>("contact.narrow_phase_reuse", true);
     ws.gravity = f.get_or<Vec3>("domain.gravity", Vec3{0, 0, -9.81});
   }
   // Also for the chute and the dam break, which build their own domains (non-periodic in z, and

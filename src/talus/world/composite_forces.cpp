@@ -27,6 +27,7 @@
 #include "talus/collide/convex_contact_analytic.h"
 #include "talus/collide/manifold.h"
 #include "talus/math/uninitialized_array.h"
+#include "talus/world/box_pair_reuse.h"
 #include "talus/world/composite_stats.h"
 #include "talus/world/memory_ref.h"
 #include "talus/world/parallel.h"
@@ -64,28 +65,6 @@ int sat_axis_of(std::uint32_t feature) {
   return -1;
 }
 
-// How a part pair has moved since it was last looked at, for the cached SAT axis.
-struct PairMotion {
-  double travelled;        ///< m, sum of the two bodies' travels (PlacedBodies::travel)
-  double turn_per_travel;  ///< rad/m, bound on the two rotation angles per metre of travel
-};
-
-// The SAT of two touching boxes. A lasting contact reuses last step's axis, tested alone, while
-// its budget proves no other axis can have taken over; the full test renews the budget.
-BoxBoxSat lasting_box_sat(const PlacedPart& pa, const PlacedPart& pb, int warm_axis, const PairMotion& motion,
-                          PartBudget& budget) {
-  BoxBoxSat sat;
-  if (warm_axis >= 0 && warm_axis == budget.axis && motion.travelled < budget.until &&
-      box_box_sat_on_axis(pa.box, pb.box, warm_axis, sat))
-    return sat;
-  sat = box_box_sat(pa.box, pb.box, warm_axis);
-  if (sat.separated)
-    budget.sleep(motion.travelled, 0.0);  // the caller extends it by the gap
-  else
-    budget = {motion.travelled + box_box_axis_reserve(pa.box, pb.box, sat.axis, motion.turn_per_travel), sat.axis};
-  return sat;
-}
-
 // The points of a manifold that overlap, as contact geometry.
 int touching_points(const ContactManifold& m, PointGeometry out[4]) {
   int n = 0;
@@ -97,18 +76,20 @@ int touching_points(const ContactManifold& m, PointGeometry out[4]) {
 // Contact points of two placed convex parts: a manifold, or the single deepest point.
 // `previous` is this part pair's contact of last step (or null), for the warm start. With no
 // point, *gap is a lower bound of the parts' distance when the test found one, else 0.
+// *full_query says whether two boxes ran the full SAT (false: served from the stored feature).
 int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a, const CompositePart& b,
-                const PlacedPart& pb, const Quat& body_b, bool manifold, const SubContact* previous,
-                const PairMotion& motion, PartBudget& budget, PointGeometry out[4], double* gap) {
+                const PlacedPart& pb, const Quat& body_b, bool manifold, bool reuse, const SubContact* previous,
+                const PairMotion& motion, PartBudget& budget, PointGeometry out[4], double* gap, bool* full_query) {
   *gap = 0;
+  *full_query = false;
   ContactCache warm;
   if (previous) warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
   if (manifold) {
     // The manifold is read where it was returned: declaring it first and assigning it cost a
     // memset and a memmove of its ~400 bytes per touching part pair.
     if (pa.is_box && pb.is_box) {
-      const BoxBoxSat sat =
-          lasting_box_sat(pa, pb, previous ? sat_axis_of(previous->feature) : -1, motion, budget);
+      const BoxBoxSat sat = lasting_box_sat(pa.box, pb.box, previous ? sat_axis_of(previous->feature) : -1, motion,
+                                            reuse, budget, full_query);
       if (sat.separated) {
         *gap = -sat.depth;
         return 0;
@@ -224,7 +205,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   gap = 0;
   constexpr bool profile = kProfile;  // the counters and clocks of the benchmark's profile, compiled out otherwise
   const std::uint64_t t_start = ticks(profile);
-  std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0;
+  std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0, n_full = 0, n_reused = 0;
   const ParticleStore& p = particles_;
   thread_local CompositeShape scratch_i, scratch_j;
   const bool has_box_i = p.shape[i] != 0, has_box_j = p.shape[j] != 0;
@@ -254,6 +235,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   // A body turning by theta moves a point at its bounding radius R by 2 R sin(theta / 2) >= 2 R theta / pi.
   const PairMotion pair_motion{travelled, 0.5 * std::numbers::pi / std::min(p.radius[i], p.radius[j])};
   const bool had_contacts = !previous.empty();
+  const bool reuse = settings_.narrow_phase_reuse;
   const std::size_t first = contacts.size();
 
   ContactResult total;
@@ -273,24 +255,35 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
       const PlacedPart& pb = placed_j[b];
       ++n_parts;
       const CompositePart &shape_a = si.parts[a], &shape_b = sj.parts[b];
-      const double d2 =
-          segment_distance2(pa.box.centre, capsule_axis(pa, shape_a), pb.box.centre, capsule_axis(pb, shape_b));
-      const double reach = shape_a.capsule.radius + shape_b.capsule.radius;
-      if (d2 >= reach * reach) {
-        const double capsule_gap = std::sqrt(d2) - reach;
-        least_gap = std::min(least_gap, capsule_gap);
-        budget.sleep(travelled, capsule_gap);
-        continue;
+      const auto part_a = static_cast<std::uint16_t>(a), part_b = static_cast<std::uint16_t>(b);
+      // A touching box pair whose stored feature is still good overlaps: its capsules need no test.
+      const SubContact* stored = nullptr;
+      bool looked_up = false;
+      if (reuse && budget.axis >= 0 && had_contacts) {
+        stored = find_part_pair(previous, part_a, part_b);
+        looked_up = true;
       }
+      if (!(stored && feature_reusable(budget, sat_axis_of(stored->feature), travelled))) {
+        const double d2 =
+            segment_distance2(pa.box.centre, capsule_axis(pa, shape_a), pb.box.centre, capsule_axis(pb, shape_b));
+        const double reach = shape_a.capsule.radius + shape_b.capsule.radius;
+        if (d2 >= reach * reach) {
+          const double capsule_gap = std::sqrt(d2) - reach;
+          least_gap = std::min(least_gap, capsule_gap);
+          budget.sleep(travelled, capsule_gap);
+          continue;
+        }
+      }
+      if (!looked_up && had_contacts) stored = find_part_pair(previous, part_a, part_b);
       ++n_narrow;
       const std::uint64_t t1 = ticks(profile);
       t_cull += t1 - t0;
-      const auto part_a = static_cast<std::uint16_t>(a), part_b = static_cast<std::uint16_t>(b);
       UninitializedArray<PointGeometry, 4> points;
       double part_gap = 0;
+      bool full_query = false;
       const int n = part_points(shape_a, pa, p.orientation[i], shape_b, pb, p.orientation[j], settings_.contact_manifold,
-                                had_contacts ? find_part_pair(previous, part_a, part_b) : nullptr, pair_motion,
-                                budget, points.data(), &part_gap);
+                                reuse, stored, pair_motion, budget, points.data(), &part_gap, &full_query);
+      if (profile && pa.is_box && pb.is_box && settings_.contact_manifold) ++(full_query ? n_full : n_reused);
       least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
       if (n == 0 && part_gap > 0) budget.sleep(travelled, part_gap);
       const std::uint64_t t2 = ticks(profile);
@@ -324,6 +317,8 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
     st.part_pairs += n_parts;
     st.narrow += n_narrow;
     st.points += n_points;
+    st.box_full_queries += n_full;
+    st.box_reused += n_reused;
     st.cull_ticks += t_cull;
     st.narrow_ticks += t_narrow;
     st.force_ticks += t_force;

@@ -34,6 +34,10 @@ struct WorldSettings {
   // k_n/n and eta_n/n of its manifold of n points; false: one point per part pair, as in
   // Huet et al. 2021, Sec. II B.
   bool contact_manifold = false;
+  // Touching box pairs serve their contact from the feature of their last full SAT query while
+  // the bodies' motion stays within that feature's reserve (box_pair_reuse.h). Exact: false
+  // gives the same bits, slower; it exists for comparisons.
+  bool narrow_phase_reuse = true;
   // Sphere worlds end each particle's step (closing half kick, next opening kick and drift)
   // inside the force pass, as soon as its force is complete; false runs them as separate passes
   // over all particles, the reference the fused form must equal to the bit.

@@ -1,0 +1,52 @@
+#pragma once
+// Narrow-phase reuse for touching box pairs (issue 29; the idea of Box2D v3's contact recycling
+// and Bullet's persistent manifolds, kept exact): a touching part pair keeps the feature of its
+// last full SAT query, the axis (reference face, or edge pair; box_box.h), with a reserve of
+// motion (box_box_axis_reserve) within which no other of the 15 axes can take over. While the
+// two bodies' travels (PlacedBodies::travel: displacement plus the chord of the turn) stay below
+// it, the pair skips its capsule cull and the 15-axis search and rebuilds its contact from the
+// stored feature alone (box_box_sat_on_axis, then the clip or edge points of that feature): the
+// very code the full query answers with, so the points are the full query's to the bit. Past
+// the reserve, on a new contact or on a feature the points no longer carry, the full query runs
+// and renews the reserve.
+//
+// Being exact, reuse changes no result: a restart (whose budgets start empty), another rank
+// count or `contact.narrow_phase_reuse = false` give the same bits, and nothing is checkpointed.
+#include "talus/collide/box_box.h"
+#include "talus/world/pair_budgets.h"
+
+namespace talus {
+
+// How a part pair has moved since it was last looked at.
+struct PairMotion {
+  double travelled;        ///< m, sum of the two bodies' travels (PlacedBodies::travel)
+  double turn_per_travel;  ///< rad/m, bound on the two rotation angles per metre of travel
+};
+
+// True while the stored feature of a touching pair still answers the full query: the budget
+// holds a reserve for `stored_axis` (the axis of the pair's points of last step) not yet spent.
+inline bool feature_reusable(const PartBudget& budget, int stored_axis, double travelled) {
+  return stored_axis >= 0 && stored_axis == budget.axis && travelled < budget.until;
+}
+
+// The SAT of two touching boxes. With `reuse`, a lasting contact evaluates its stored axis alone
+// while feature_reusable says it must still win (*full_query = false); otherwise the full test
+// runs, warm-started from that axis, and (with `reuse`) renews the reserve.
+inline BoxBoxSat lasting_box_sat(const OrientedBox& a, const OrientedBox& b, int stored_axis, const PairMotion& motion,
+                                 bool reuse, PartBudget& budget, bool* full_query) {
+  BoxBoxSat sat;
+  *full_query = false;
+  if (reuse && feature_reusable(budget, stored_axis, motion.travelled) && box_box_sat_on_axis(a, b, stored_axis, sat))
+    return sat;
+  *full_query = true;
+  sat = box_box_sat(a, b, stored_axis);
+  if (sat.separated)
+    budget.sleep(motion.travelled, 0.0);  // the caller extends it by the gap
+  else if (reuse)
+    budget = {motion.travelled + box_box_axis_reserve(a, b, sat.axis, motion.turn_per_travel), sat.axis};
+  else
+    budget.sleep(motion.travelled, 0.0);  // awake: touching pairs are tested every step
+  return sat;
+}
+
+}  // namespace talus
