@@ -42,34 +42,39 @@ def add_seed_options(p, seeds_required):
     add_engine_options(p)
 
 
+def command(sub, name, help):
+    # No abbreviated options: a Slurm array task's command line drops --slurm and --talus by name.
+    return sub.add_parser(name, help=help, allow_abbrev=False)
+
+
 def parser():
     top = argparse.ArgumentParser(prog="python3 -m talus",
                                   description="Figures and studies of many runs of the talus engine.")
     sub = top.add_subparsers(dest="command", required=True, metavar="SUBCOMMAND")
 
-    p = sub.add_parser("plot", help="draw a results folder's figures (energies; dam-break, ensemble, sweep, "
-                                    "hopper and chute figures)")
+    p = command(sub, "plot", "draw a results folder's figures (energies; dam-break, ensemble, sweep, "
+                             "hopper and chute figures)")
     p.add_argument("dir", help="results folder")
     p.add_argument("--snapshot-times", help="dam-break side snapshots at these times, s after the gate opened, "
                                             "comma separated")
-    p = sub.add_parser("render", help="draw a results folder's configuration as a PNG (needs run.vtk_interval)")
+    p = command(sub, "render", "draw a results folder's configuration as a PNG (needs run.vtk_interval)")
     p.add_argument("dir", help="results folder")
     p.add_argument("--time", type=float, default=float("inf"), help="simulated time (s); default: the last frame")
     p.add_argument("--view", choices=["side", "top"], default="side", help="side (x-z) or top (x-y)")
     p.add_argument("--out", help="PNG file (default: DIR/render_<view>_<time>.png)")
-    p = sub.add_parser("fit", help="closure fits of a flow map / h_stop folder (DIR/fits.json, DIR/fits.md)")
+    p = command(sub, "fit", "closure fits of a flow map / h_stop folder (DIR/fits.json, DIR/fits.md)")
     p.add_argument("dir", help="results folder")
 
-    add_seed_options(sub.add_parser("ensemble", help="run a scenario for N seeds and aggregate (DIR/ensemble.json)"),
+    add_seed_options(command(sub, "ensemble", "run a scenario for N seeds and aggregate (DIR/ensemble.json)"),
                      seeds_required=True)
-    p = sub.add_parser("sweep", help="run an ensemble per grid point (DIR/sweep.csv, flow map)")
+    p = command(sub, "sweep", "run an ensemble per grid point (DIR/sweep.csv, flow map)")
     add_seed_options(p, seeds_required=False)
     p.add_argument("--grid", action="append", required=True, metavar="KEY=V1,V2,...",
                    help="values of one scenario key (repeatable: the grid is their product)")
-    p = sub.add_parser("aggregate", help="aggregate the seed_* folders already in DIR (DIR/ensemble.json)")
+    p = command(sub, "aggregate", "aggregate the seed_* folders already in DIR (DIR/ensemble.json)")
     p.add_argument("dir", help="ensemble folder")
 
-    p = sub.add_parser("hstop", help="h_stop search on a chute scenario (Weinhart et al. 2012, Sect. 6)")
+    p = command(sub, "hstop", "h_stop search on a chute scenario (Weinhart et al. 2012, Sect. 6)")
     p.add_argument("scenario", metavar="FILE", help="chute scenario file (TOML)")
     p.add_argument("--lambda", dest="lambdas", default="1", help="comma-separated base diameters")
     p.add_argument("--jobs", type=positive, default=2, help="cases at a time, one thread each")
@@ -84,7 +89,7 @@ def parser():
                    help="time units between checkpoints of each case, which an interrupted case resumes from")
     add_engine_options(p)
 
-    p = sub.add_parser("flowmap", help="flow-state map over lambda, H, theta (Weinhart et al. 2012, Sect. 8)")
+    p = command(sub, "flowmap", "flow-state map over lambda, H, theta (Weinhart et al. 2012, Sect. 8)")
     p.add_argument("scenario", metavar="FILE", help="chute scenario file (TOML)")
     p.add_argument("--lambda", dest="lambdas", default="0,0.5,0.6666666666666666,0.8333333333333334,1,2")
     p.add_argument("--heights", default="10,20,30,40")
