@@ -1,7 +1,7 @@
 """Runs chute cases with `talus run` (one OpenMP thread each, `jobs` at a time) and reads their
 summary.json: the engine of the h_stop search and the flow-state sweep (Weinhart et al. 2012,
 Sects. 6 and 8). A case is (lambda, H, theta); its results folder is reused when it already
-holds a summary, and a case that was cut off goes on from its newest checkpoint (the tools set
+holds a summary, and a case that was cut off goes on from its newest checkpoint (the studies set
 run.checkpoint_interval), so an interrupted search resumes where it stopped."""
 import csv
 import json

@@ -2,7 +2,7 @@
 diameter lambda, filling height H and angle theta is run to --end-time with depth profiles
 averaged over the last --average time units, `jobs` cases at once on one thread each. Writes
 DIR/sweep_runs.csv: flow state, h, u bar, F, mu, K, alpha and bulk volume fraction per case,
-the input of chute_fits.py and plot_chute.py.
+the input of `python3 -m talus fit` (chute_fits) and `plot` (plot_chute).
 
 Under mpirun the cases are spread over the ranks (case_pool.py); --slurm FILE writes a
 job array of one case per task instead (slurm_array.py).
