@@ -162,7 +162,7 @@ int run_python(std::vector<std::string> args) {
 // other way round.
 int moved_to_python(const std::string& name) {
   const std::filesystem::path package = python_package_parent();
-  std::fprintf(stderr, "talus: '%s' is a command of the Python package now:\n  %spython3 -m talus %s ...\n",
+  std::fprintf(stderr, "talus: '%s' is a command of the Python package now:\n  %s/usr/bin/python3 -m talus %s ...\n",
                name.c_str(), package.empty() ? "" : ("PYTHONPATH=" + package.string() + " ").c_str(), name.c_str());
   return 2;
 }
