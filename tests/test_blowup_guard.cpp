@@ -389,11 +389,11 @@ TEST(BlowUpGuard, ShortChuteNeverTripsIt) {
   fs::remove_all(dir);
 }
 
-// examples/dam_break_small.toml with 30 crosses dropped from 3 cm, at the largest time step the
+// tests/data/dam_break_narrow.toml with 30 crosses dropped from 3 cm, at the largest time step the
 // loader allows (t_c / 10, where |v| dt / r is largest): the gate is pulled up (43 m/s^2, with
 // friction on the crosses) after 0.15 s and the column collapses for 0.07 s.
 TEST(BlowUpGuard, ShortDamBreakNeverTripsIt) {
-  io::ScenarioFile f = io::ScenarioFile::from_file(fs::path(TALUS_SOURCE_DIR) / "examples" / "dam_break_small.toml");
+  io::ScenarioFile f = io::ScenarioFile::from_file(fs::path(TALUS_SOURCE_DIR) / "tests" / "data" / "dam_break_narrow.toml");
   for (const char* o : {"run.end_time=0.22", "run.time_step=5e-6", "run.vtk_interval=0", "dam_break.count=30",
                         "dam_break.fill_height=0.03", "dam_break.settle_min_time=0", "dam_break.settle_max_time=0.15"})
     f.set_override(o);

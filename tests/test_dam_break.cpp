@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 nlohmann::json run_example(const std::string& example, const std::vector<std::string>& overrides,
                            const std::string& name, int threads = 1) {
-  io::ScenarioFile f = io::ScenarioFile::from_file(fs::path(TALUS_SOURCE_DIR) / "examples" / example);
+  io::ScenarioFile f = io::ScenarioFile::from_file(fs::path(TALUS_SOURCE_DIR) / example);
   for (const std::string& o : overrides) f.set_override(o);
   Scenario sc = load_scenario(f);
   RunOptions opt;
@@ -74,7 +74,7 @@ TEST(BodyInsertion, CrossesNeverTouchAndStayInTheRegion) {
 // covers the published scatter and that resolution, and fails for a column that does not flow
 // or one that spreads like a frictionless fluid.
 TEST(DamBreak, SphereColumnRunsOutWithinPublishedScatter) {
-  const nlohmann::json s = run_example("dam_break_spheres.toml", {"run.vtk_interval=0"}, "dam_break_spheres");
+  const nlohmann::json s = run_example("examples/dam_break_spheres.toml", {"run.vtk_interval=0"}, "dam_break_spheres");
   ASSERT_EQ(s["stop_reason"], "collapse_over");
   const double a = s["aspect_ratio"].get<double>();
   const double ratio = s["dam_break"]["runout_ratio"].get<double>();
@@ -116,7 +116,7 @@ TEST(DamBreak, ShortColumnsOfCrossesDoNotCollapse) {
   std::vector<double> advance;  // (runout - L0) / cross length
   std::vector<double> kept;     // H_inf / H0
   for (int seed = 1; seed <= 5; ++seed) {
-    const nlohmann::json s = run_example("dam_break_small.toml",
+    const nlohmann::json s = run_example("tests/data/dam_break_narrow.toml",
                                          {"run.vtk_interval=0", "run.end_time=1.2", "dam_break.count=40",
                                           "dam_break.width=0.03", "dam_break.fill_height=0.05",
                                           "run.seed=" + std::to_string(seed)},
@@ -138,13 +138,13 @@ TEST(DamBreak, ShortColumnsOfCrossesDoNotCollapse) {
 
 TEST(DamBreak, SameSeedSameColumn) {
   const std::vector<std::string> o = {"run.vtk_interval=0", "run.end_time=0.05", "dam_break.count=100"};
-  const nlohmann::json a = run_example("dam_break_spheres.toml", o, "dam_break_seed_a");
-  const nlohmann::json b = run_example("dam_break_spheres.toml", o, "dam_break_seed_b");
+  const nlohmann::json a = run_example("examples/dam_break_spheres.toml", o, "dam_break_seed_a");
+  const nlohmann::json b = run_example("examples/dam_break_spheres.toml", o, "dam_break_seed_b");
   EXPECT_EQ(a["energies"].dump(), b["energies"].dump());
   EXPECT_EQ(a["contacts"], b["contacts"]);
   std::vector<std::string> other = o;
   other.push_back("run.seed=2");
-  const nlohmann::json c = run_example("dam_break_spheres.toml", other, "dam_break_seed_c");
+  const nlohmann::json c = run_example("examples/dam_break_spheres.toml", other, "dam_break_seed_c");
   EXPECT_NE(a["energies"].dump(), c["energies"].dump());
 }
 

@@ -68,4 +68,4 @@ def test_a_blow_up_stops_the_run_with_its_step():
 def test_a_study_scenario_warns_that_its_own_phases_do_not_run():
     with pytest.warns(UserWarning, match="^dam_break: the study's own phases"):
         sim = talus.load(REPOSITORY / "examples" / "dam_break_small.toml")
-    assert sim.particle_count == 80
+    assert sim.particle_count == 400

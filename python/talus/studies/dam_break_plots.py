@@ -147,14 +147,22 @@ def snapshots(folder: Path, summary: dict, times) -> None:
         shown.append(available[-1])
     window = render.pile_window(folder, shown, "side")
     (x0, x1), (z0, z1) = window
+    # Tall narrow columns side by side in one row; a spread pile in two columns of panels.
     panel_height = 2.2
     panel_width = min(max(panel_height * (x1 - x0) / (z1 - z0), 1.2), 6.0)
-    fig, axes = plt.subplots(len(shown), 1, figsize=(panel_width + 0.6, panel_height * len(shown) + 0.4)) \
-        if panel_width > 3.5 else plt.subplots(1, len(shown), figsize=(panel_width * len(shown) + 0.6, panel_height + 0.6))
-    for ax, frame_time in zip(np.atleast_1d(axes), shown):
+    columns = len(shown) if panel_width < 3.5 else 2
+    rows = -(-len(shown) // columns)
+    fig, axes = plt.subplots(rows, columns, figsize=(panel_width * columns + 0.6, (panel_height + 0.4) * rows),
+                             squeeze=False)
+    for ax in axes.flat[len(shown):]:
+        ax.axis("off")
+    for ax, frame_time in zip(axes.flat, shown):
         render.draw_on(ax, folder, frame_time, "side", window)
         ax.set_title(f"t = {frame_time - gate:.3g} s after the gate opened", fontsize=8)
         ax.tick_params(labelsize=6)
+    axes[-1, 0].set_xlabel("x (m)", fontsize=7)
+    axes[-1, 0].set_ylabel("z (m)", fontsize=7)
+    fig.suptitle("Side views, coloured by speed (each panel to its own fastest particle)", fontsize=9)
     fig.tight_layout()
     save(fig, folder / "fig06_08_side_snapshots.png")
 

@@ -123,9 +123,11 @@ def draw_on(ax, results, time: float = float("inf"), view: str = "side", window=
 
 
 def draw(results, time: float = float("inf"), view: str = "side", out=None) -> Path:
-    """One frame as a PNG, framed on the pile."""
+    """One frame as a PNG, framed on the pile, the picture as wide as the frame is."""
     fig, ax = plt.subplots(figsize=(8, 5))
     t, vmax = draw_on(ax, results, time, view)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    fig.set_size_inches(8, min(max(8 * (y1 - y0) / (x1 - x0) + 1.2, 2.6), 8))
     ax.set_xlabel("x (m)")
     ax.set_ylabel("z (m)" if view == "side" else "y (m)")
     ax.set_title(f"t = {t:.4g} s, coloured by speed (max {vmax:.3g} m/s)")
