@@ -1,9 +1,11 @@
-// The talus command line: run, resume, check, analyze, ensemble, sweep, render, plot, params and the chute study tools.
+// The talus command line: run, resume, check, analyze, coarse-grain, params; plot, render and fit
+// start the Python package talus (python/talus), which also runs the studies of many runs.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -125,10 +127,28 @@ int command_resume(const std::string& dir, bool quiet, int threads, std::optiona
                   {latest.string(), checkpoint_interval});
 }
 
-// The figures are drawn by the project's matplotlib scripts (Debian python3-matplotlib).
-int run_tool(const std::string& script, std::vector<std::string> args) {
-  const std::string path = std::string(TALUS_TOOLS_DIR) + "/" + script;
-  args.insert(args.begin(), {"/usr/bin/python3", path});
+// The folder holding the Python package talus that belongs to this executable: <exe>/python
+// in the build tree, <exe>/../lib/python3/dist-packages when installed; empty if neither has it.
+std::filesystem::path python_package_parent() {
+  std::error_code ec;
+  const std::filesystem::path exe_dir = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path();
+  if (ec) return {};
+  for (const std::filesystem::path dir : {exe_dir / "python", exe_dir / ".." / "lib" / "python3" / "dist-packages"})
+    if (std::filesystem::exists(dir / "talus" / "__init__.py")) return dir.lexically_normal();
+  return {};
+}
+
+// `python3 -m talus ARGS`: figures are drawn by the Python package (matplotlib and VTK from
+// Debian), found beside this executable, else on Python's own path. It is built for Debian's
+// interpreter. The package never starts this executable for these subcommands.
+int run_python(std::vector<std::string> args) {
+  const std::filesystem::path package = python_package_parent();
+  if (!package.empty()) {
+    const char* old = std::getenv("PYTHONPATH");
+    const std::string path = package.string() + (old && *old ? ":" + std::string(old) : "");
+    setenv("PYTHONPATH", path.c_str(), 1);
+  }
+  args.insert(args.begin(), {"/usr/bin/python3", "-m", "talus"});
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -136,6 +156,15 @@ int run_tool(const std::string& script, std::vector<std::string> args) {
   execv(argv[0], argv.data());
   std::perror("talus: cannot start /usr/bin/python3");
   return 1;
+}
+
+// The studies of many runs moved to the Python package: they start this executable, never the
+// other way round.
+int moved_to_python(const std::string& name) {
+  const std::filesystem::path package = python_package_parent();
+  std::fprintf(stderr, "talus: '%s' is a command of the Python package now:\n  %s/usr/bin/python3 -m talus %s ...\n",
+               name.c_str(), package.empty() ? "" : ("PYTHONPATH=" + package.string() + " ").c_str(), name.c_str());
+  return 2;
 }
 
 // A checkpoint of the initial state, scaled to the particles still to be poured: contact
@@ -173,22 +202,6 @@ int command_coarse_grain(const std::filesystem::path& dir, const CoarseGrainRequ
               out.string().c_str(), cg.snapshots, cg.first_time, cg.last_time, grid.size(),
               cg.read_seconds / cg.snapshots, cg.coarse_grain_seconds / cg.snapshots);
   return 0;
-}
-
-// The executable itself, for the tools that start runs.
-std::string self_path() {
-  std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string("talus") : self.string();
-}
-
-// `talus plot DIR`: dam-break figures for a dam-break run, an ensemble or a sweep; the repose
-// figure for a hopper run or sweep; energies otherwise.
-std::string plot_tool(const std::filesystem::path& dir) {
-  if (std::filesystem::exists(dir / "sweep.json") || std::filesystem::exists(dir / "ensemble.json") ||
-      std::filesystem::exists(dir / "collapse_speeds.csv") || std::filesystem::exists(dir / "pile_profile.csv"))
-    return "dam_break_plots.py";
-  return "plot_timeseries.py";
 }
 
 int command_check(const std::string& path, const std::vector<std::string>& overrides) {
@@ -254,39 +267,28 @@ int main(int argc, char** argv) {
   coarse->add_option("--from", cg.from, "First snapshot time of the average");
   coarse->add_option("--to", cg.to, "Last snapshot time of the average");
   coarse->add_option("--out", cg.out, "CSV file (default DIR/coarse_grained.csv)");
-  CLI::App* render = app.add_subcommand("render", "Draw a results folder's configuration as a PNG (needs run.vtk_interval)");
+  CLI::App* render = app.add_subcommand(
+      "render", "Draw a results folder's configuration as a PNG (needs run.vtk_interval; python3 -m talus render)");
   render->add_option("dir", path, "Results folder")->required();
   render->add_option("--time", render_time, "Simulated time (s); default: the last frame");
   render->add_option("--view", view, "side (x-z) or top (x-y)")->check(CLI::IsMember({"side", "top"}));
   render->add_option("--out", picture, "PNG file (default: DIR/render_<view>_<time>.png)");
-  CLI::App* plot = app.add_subcommand("plot", "Plot a results folder: energies; dam-break, ensemble, sweep and hopper figures");
+  std::string snapshot_times;
+  CLI::App* plot = app.add_subcommand(
+      "plot", "Plot a results folder: energies; dam-break, ensemble, sweep, hopper and chute figures (python3 -m talus plot)");
   plot->add_option("dir", path, "Results folder")->required();
+  plot->add_option("--snapshot-times", snapshot_times, "Dam-break side snapshots at these times (s after the gate opened, T1,T2,...)");
 
-  int seeds = 1, jobs = 1, first_seed = 1, case_index = -1;
-  std::vector<std::string> grid;
-  std::string slurm_script, slurm_time;
-  CLI::App* ensemble = app.add_subcommand("ensemble", "Run a scenario for N seeds and aggregate (DIR/ensemble.json)");
-  CLI::App* sweep = app.add_subcommand("sweep", "Run an ensemble per grid point (DIR/sweep.csv, flow map)");
-  for (CLI::App* sub : {ensemble, sweep}) {
-    sub->add_option("file", path, "Scenario file (TOML)")->required();
-    sub->add_option("--seeds", seeds, "Runs per case, seeds first-seed..first-seed+N-1")->check(CLI::PositiveNumber);
-    sub->add_option("--first-seed", first_seed, "First run.seed")->check(CLI::NonNegativeNumber);
-    sub->add_option("--jobs", jobs, "Runs at a time, one thread each")->check(CLI::PositiveNumber);
-    sub->add_option("--out", out, "Results folder")->required();
-    sub->add_option("--set", overrides, "Override a scenario value for every run: --set key=value (repeatable)");
-    sub->add_option("--slurm", slurm_script, "Write a Slurm job-array script (one run per task) instead of running");
-    sub->add_option("--slurm-time", slurm_time, "#SBATCH --time of each array task, e.g. 12:00:00");
-    sub->add_option("--case-index", case_index, "Run only run I of the list (a Slurm array task)")->check(CLI::NonNegativeNumber);
-  }
-  ensemble->get_option("--seeds")->required();
-  sweep->add_option("--grid", grid, "key=v1,v2,... (repeatable: the grid is their product)")->required();
-  // The chute study tools (Weinhart et al. 2012, Sects. 6, 8, 9): arguments go to the script.
-  CLI::App* hstop = app.add_subcommand("hstop", "h_stop search on a chute scenario (tools/chute_hstop.py: --lambda, --jobs, --out)");
-  CLI::App* flowmap = app.add_subcommand("flowmap", "Flow-state map over lambda, H, theta (tools/chute_sweep.py)");
-  CLI::App* fit = app.add_subcommand("fit", "Closure fits of a sweep / h_stop folder (tools/chute_fits.py)");
-  for (CLI::App* tool : {hstop, flowmap, fit}) {
-    tool->allow_extras();
-    tool->prefix_command();
+  CLI::App* fit = app.add_subcommand("fit", "Closure fits of a flow map / h_stop folder (python3 -m talus fit)");
+  fit->allow_extras();
+  fit->prefix_command();
+  // Hidden: the studies that start runs are `python3 -m talus ensemble|sweep|hstop|flowmap`.
+  std::vector<CLI::App*> moved;
+  for (const char* name : {"ensemble", "sweep", "hstop", "flowmap"}) {
+    CLI::App* sub = app.add_subcommand(name, "")->group("");
+    sub->allow_extras();
+    sub->prefix_command();
+    moved.push_back(sub);
   }
 
   CLI::App* params = app.add_subcommand("params", "Contact parameters from material targets");
@@ -318,43 +320,24 @@ int main(int argc, char** argv) {
     if (*resume) return command_resume(resume_dir, quiet, threads, run_start.checkpoint_interval);
     if (*check) return command_check(path, overrides);
     if (*plot) {
-      // A chute study folder (a run with depth profiles, a sweep or an h_stop search) gets its figures too.
-      const std::filesystem::path dir(path);
-      for (const char* f : {"chute_profile.csv", "sweep_runs.csv", "hstop_runs.csv"})
-        if (std::filesystem::exists(dir / f)) return run_tool("plot_chute.py", {path});
-      return run_tool(plot_tool(path), {path});
+      std::vector<std::string> args = {"plot", path};
+      if (!snapshot_times.empty()) args.insert(args.end(), {"--snapshot-times", snapshot_times});
+      return run_python(args);
     }
-    if (*hstop || *flowmap) {
-      std::vector<std::string> args = (*hstop ? hstop : flowmap)->remaining();
-      args.insert(args.end(), {"--talus", self_path()});
-      return run_tool(*hstop ? "chute_hstop.py" : "chute_sweep.py", args);
+    if (*fit) {
+      std::vector<std::string> args = fit->remaining();
+      args.insert(args.begin(), "fit");
+      return run_python(args);
     }
-    if (*fit) return run_tool("chute_fits.py", fit->remaining());
+    for (CLI::App* sub : moved)
+      if (*sub) return moved_to_python(sub->get_name());
     if (*analyze) return command_analyze(path, overrides);
     if (*coarse) return command_coarse_grain(path, cg);
-    if (*ensemble || *sweep) {
-      // Bad input stops here, with its file and line, rather than in every run's log.
-      std::vector<std::string> first = overrides;
-      for (const auto& g : grid) first.push_back(g.substr(0, g.find(',')));
-      io::ScenarioFile file = open_scenario(path, first);
-      load_scenario(file);
-      std::vector<std::string> args;
-      if (*ensemble) args = {"run", path, "--seeds", std::to_string(seeds)};
-      else args = {path, "--seeds", std::to_string(seeds)};
-      args.insert(args.end(), {"--first-seed", std::to_string(first_seed), "--jobs", std::to_string(jobs), "--out", out,
-                               "--talus", self_path()});
-      for (const auto& g : grid) args.insert(args.end(), {"--grid", g});
-      for (const auto& o : overrides) args.insert(args.end(), {"--set", o});
-      if (!slurm_script.empty()) args.insert(args.end(), {"--slurm", slurm_script});
-      if (!slurm_time.empty()) args.insert(args.end(), {"--slurm-time", slurm_time});
-      if (case_index >= 0) args.insert(args.end(), {"--case-index", std::to_string(case_index)});
-      return run_tool(*ensemble ? "dam_break_ensemble.py" : "dam_break_sweep.py", args);
-    }
     if (*render) {
-      std::vector<std::string> args = {path, "--view", view};
+      std::vector<std::string> args = {"render", path, "--view", view};
       if (render_time >= 0) args.insert(args.end(), {"--time", std::to_string(render_time)});
       if (!picture.empty()) args.insert(args.end(), {"--out", picture});
-      return run_tool("render.py", args);
+      return run_python(args);
     }
     if (*huet) {
       const double m = 0.5 * mass;

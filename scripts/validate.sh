@@ -9,7 +9,7 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 if [ "${1:-}" = "run" ]; then
   shift
-  [ -x "$root/build/talus" ] || cmake --build "$root/build" --target talus
+  [ -x "$root/build/talus" ] || cmake --build "$root/build" --target talus talus_python
   exec /usr/bin/python3 "$root/tools/validation.py" run "$@"
 fi
 exec /usr/bin/python3 "$root/tools/validation.py" report

@@ -19,8 +19,8 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import chute_fits  # noqa: E402
 import validation  # noqa: E402
+from talus.studies import chute_fits  # noqa: E402
 
 
 def write_csv(path, rows):

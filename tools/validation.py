@@ -2,7 +2,7 @@
 """The papers' results, regenerated from the cases under validation/ (scripts/validate.sh).
 
   validation.py run [--jobs N] [--talus BIN] [--runs DIR] [--only FAMILY,...]
-      runs the cases still missing (each family a `talus sweep`, finished runs reused, an
+      runs the cases still missing (each family a `python3 -m talus sweep`, finished runs reused, an
       interrupted one run again), then copies every finished run's compact results (summary.json
       and the small CSVs, no VTK, no checkpoints) into validation/<paper>/<family>/.
   validation.py compact [--runs DIR]
@@ -25,6 +25,34 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 VALIDATION = ROOT / "validation"
+
+
+def fits_module():
+    """talus.studies.chute_fits; without a built package, the source file itself (it needs only
+    numpy and scipy), so that the report regenerates on a checkout that was never built."""
+    try:
+        from talus.studies import chute_fits
+    except ImportError:
+        import importlib.util
+        spec = importlib.util.spec_from_file_location(
+            "chute_fits", ROOT / "python" / "talus" / "studies" / "chute_fits.py")
+        chute_fits = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(chute_fits)
+    return chute_fits
+
+
+def run_study_command(args, command, *options):
+    """`python3 -m talus COMMAND ...` with the package beside args.talus (its build) first on the
+    path, and that talus doing the runs."""
+    env = dict(os.environ)
+    package = Path(args.talus).resolve().parent / "python"
+    paths = [str(package)] if (package / "talus").is_dir() else []
+    env["PYTHONPATH"] = os.pathsep.join(paths + [p for p in [env.get("PYTHONPATH")] if p])
+    cmd = [sys.executable, "-m", "talus", command, *options, "--talus", args.talus]
+    print(" ".join(cmd), flush=True)
+    subprocess.run(cmd, check=False, env=env)
+
+
 KEPT_FILES = ["summary.json", "collapse_speeds.csv", "force_pdf.csv", "fabric.csv", "height_profile.csv"]
 
 
@@ -56,7 +84,7 @@ FAMILIES = [
 
 
 class ChuteStudy:
-    """A chute study of Weinhart et al. 2012 run by `talus hstop` or `talus flowmap` (which reuse
+    """A chute study of Weinhart et al. 2012 run by `python3 -m talus hstop` or `flowmap` (which reuse
     finished cases and resume cut-off ones from their checkpoints)."""
 
     def __init__(self, name, command, options, tables):
@@ -100,10 +128,8 @@ def run_folders(family_dir: Path):
 
 def run_chute_study(study, args, runs):
     out = study.folder(runs)
-    cmd = [args.talus, study.command, str(ROOT / "examples" / "chute.toml"), *study.options, "--jobs", str(args.jobs),
-           "--out", str(out)]
-    print(" ".join(cmd), flush=True)
-    subprocess.run(cmd, check=False)
+    run_study_command(args, study.command, str(ROOT / "examples" / "chute.toml"), *study.options, "--jobs", str(args.jobs),
+          "--out", str(out))
     compact_chute(study, out)
 
 
@@ -142,12 +168,11 @@ def run(args):
         for run_dir in run_folders(out).values():  # interrupted: run again
             if (run_dir / "summary.json").exists() and not finished(run_dir):
                 (run_dir / "summary.json").unlink()
-        cmd = [args.talus, "sweep", str(ROOT / fam.scenario), "--grid", f"{fam.key}={','.join(fam.values)}",
-               "--seeds", str(fam.seeds), "--jobs", str(args.jobs), "--out", str(out)]
+        options = [str(ROOT / fam.scenario), "--grid", f"{fam.key}={','.join(fam.values)}", "--seeds", str(fam.seeds),
+                   "--jobs", str(args.jobs), "--out", str(out)]
         for s in fam.sets:
-            cmd += ["--set", s]
-        print(" ".join(cmd), flush=True)
-        subprocess.run(cmd, check=False)
+            options += ["--set", s]
+        run_study_command(args, "sweep", *options)
         compact(fam, out)
 
 
@@ -440,9 +465,8 @@ def plot_huet(cases, out):
 
 def weinhart_report(lines, base=VALIDATION):
     """Table 1 (lambda = 1) from the committed staircase and flow map: the fits of
-    tools/chute_fits.py on the cases' tables, beside the paper's values."""
-    sys.path.insert(0, str(ROOT / "tools"))
-    import chute_fits
+    talus.studies.chute_fits on the cases' tables, beside the paper's values."""
+    chute_fits = fits_module()
     out = base / "weinhart2012"
     intervals = chute_fits._read(str(out / "hstop" / "hstop_intervals.csv")) if (out / "hstop" / "hstop_intervals.csv").exists() else []
     runs = []
@@ -463,7 +487,7 @@ def weinhart_report(lines, base=VALIDATION):
     out.mkdir(parents=True, exist_ok=True)
     (out / "table1.json").write_text(json.dumps(table, indent=1) + "\n")
     lines += [f"{len(runs)} cases, {len(intervals)} arrest intervals of the staircase. Fits as Eqs. 35 and 47 "
-              "(tools/chute_fits.py), standard errors from the least-squares covariance; those of beta and gamma "
+              "(talus.studies.chute_fits), standard errors from the least-squares covariance; those of beta and gamma "
               "are given the fitted h_stop curve and leave out its uncertainty.", "",
               "| quantity | Talus | Weinhart et al. 2012, Table 1 | difference | within the bar |", "|---|---|---|---|---|"]
     for name, paper in TABLE1.items():

@@ -1,16 +1,14 @@
-#!/usr/bin/env python3
 """Runs an ensemble for every point of a grid of scenario values and tabulates them: the flow map
 of Huet et al. 2021, Fig. 9 for a dam break, the repose angle against mu_c (Appendix B 2, Fig. 23)
 for the hopper. Any scenario key can be swept; all runs of all points share one pool of jobs.
 
-Usage: dam_break_sweep.py FILE --grid key=v1,v2 [--grid key2=...] --seeds N --jobs J --out DIR [--set k=v]
-                          [--slurm FILE [--slurm-time LIMIT]] [--case-index I]
-Under mpirun the runs are spread over the ranks (tools/case_pool.py); --slurm FILE writes a job
-array of one run per task instead (tools/slurm_array.py).
+Usage: python3 -m talus sweep FILE --grid key=v1,v2 [--grid key2=...] [--seeds N] [--jobs J] --out DIR
+                             [--set k=v] [--talus BIN] [--slurm FILE [--slurm-time LIMIT]] [--case-index I]
+Under mpirun the runs are spread over the ranks (case_pool.py); --slurm FILE writes a job
+array of one run per task instead (slurm_array.py).
 Writes DIR/<point>/seed_<k>/ and DIR/<point>/ensemble.json per point, then DIR/sweep.json and
 DIR/sweep.csv (one row per point: grid values, runs, regime fractions, verdict, mean and standard
 deviation of the headline measurements)."""
-import argparse
 import csv
 import itertools
 import json
@@ -18,9 +16,8 @@ import os
 import sys
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from dam_break_ensemble import REGIMES, run_study, seed_jobs, write_atomic, write_ensemble  # noqa: E402
-import slurm_array  # noqa: E402
+from . import engine
+from .dam_break_ensemble import REGIMES, run_study, seed_jobs, write_atomic, write_ensemble
 
 # Measurements tabulated per point when the summaries have them (mean and std columns).
 HEADLINE = ["L0", "H0", "W0", "aspect_ratio", "runout", "final_height", "com_displacement", "coordination_number",
@@ -64,20 +61,9 @@ def table_row(assignment, record):
     return row
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("scenario")
-    parser.add_argument("--grid", action="append", required=True, help="key=v1,v2,... (repeatable)")
-    parser.add_argument("--seeds", type=int, default=1)
-    parser.add_argument("--first-seed", type=int, default=1)
-    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
-    parser.add_argument("--out", required=True)
-    parser.add_argument("--set", action="append", default=[], dest="overrides")
-    parser.add_argument("--talus", default="talus")
-    slurm_array.add_options(parser)
-    args = parser.parse_args()
-    if args.seeds < 1 or args.jobs < 1:
-        sys.exit("sweep: --seeds and --jobs must be at least 1")
+def run(args) -> None:
+    """`python3 -m talus sweep`: args as parsed by talus.studies.cli, with the talus executable
+    found and the command line (args.argv) for Slurm array tasks."""
     grid = parse_grid(args.grid)
     out = Path(args.out)
     points = [list(zip([k for k, _ in grid], values)) for values in itertools.product(*[v for _, v in grid])]
@@ -85,6 +71,7 @@ def main() -> None:
     for assignment in points:
         overrides = args.overrides + [f"{k}={v}" for k, v in assignment]
         jobs += seed_jobs(args.scenario, out / point_name(assignment), args.seeds, args.first_seed, overrides)
+    engine.check_scenario(args.talus, args.scenario, jobs[0][2])
     failed = run_study(jobs, args, "sweep", out)
     if failed is None:
         return
@@ -110,7 +97,3 @@ def main() -> None:
             writer.writerow({c: (f"{row[c]:.10g}" if isinstance(row.get(c), float) else row.get(c, "")) for c in columns})
     os.replace(tmp, out / "sweep.csv")
     print(f"{out}/sweep.csv: {len(rows)} points" + (f", {len(failed)} failed runs" if failed else ""))
-
-
-if __name__ == "__main__":
-    main()

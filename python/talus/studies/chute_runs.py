@@ -1,16 +1,14 @@
 """Runs chute cases with `talus run` (one OpenMP thread each, `jobs` at a time) and reads their
 summary.json: the engine of the h_stop search and the flow-state sweep (Weinhart et al. 2012,
 Sects. 6 and 8). A case is (lambda, H, theta); its results folder is reused when it already
-holds a summary, and a case that was cut off goes on from its newest checkpoint (the tools set
+holds a summary, and a case that was cut off goes on from its newest checkpoint (the studies set
 run.checkpoint_interval), so an interrupted search resumes where it stopped."""
 import csv
 import json
 import os
-import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import case_pool  # noqa: E402
+from . import case_pool
 
 COLUMNS = ["lambda", "H", "angle", "flow_state", "arrested", "stop_reason", "final_time", "h", "base", "surface",
            "mean_velocity", "froude", "mu_macro", "K", "alpha", "volume_fraction", "bulk_volume_fraction",
@@ -19,6 +17,13 @@ COLUMNS = ["lambda", "H", "angle", "flow_state", "arrested", "stop_reason", "fin
 
 def case_name(lam, H, angle):
     return "lambda%g_H%g_theta%g" % (lam, H, angle)
+
+
+def case_overrides(case, overrides):
+    """The scenario values of a case (lambda, H, theta), then the study's own."""
+    lam, H, angle = case
+    return ["chute.base_diameter=%r" % float(lam), "chute.fill_height=%r" % float(H),
+            "chute.angle=%r" % float(angle)] + list(overrides)
 
 
 def is_arrested(summary):
@@ -39,7 +44,7 @@ def row_of(case, summary, folder):
 
 
 class Runner:
-    """Starts `talus run` processes through a case pool (tools/case_pool.py: `jobs` at once here,
+    """Starts `talus run` processes through a case pool (case_pool.py: `jobs` at once here,
     or one per rank under mpirun) and reports finished cases."""
 
     def __init__(self, talus, scenario, out, jobs, overrides, quiet=False):
@@ -76,11 +81,8 @@ class Runner:
         # bit for bit, instead of starting again: long flows span several runs of a study or array tasks.
         if os.path.exists(os.path.join(self.folder(case), "checkpoints", "latest.h5")):
             return [self.talus, "resume", self.folder(case), "--quiet", "--threads", "1"]
-        lam, H, angle = case
-        cmd = [self.talus, "run", self.scenario, "--out", self.folder(case), "--overwrite", "--quiet",
-               "--threads", "1", "--set", "chute.base_diameter=%r" % float(lam),
-               "--set", "chute.fill_height=%r" % float(H), "--set", "chute.angle=%r" % float(angle)]
-        for o in self.overrides:
+        cmd = [self.talus, "run", self.scenario, "--out", self.folder(case), "--overwrite", "--quiet", "--threads", "1"]
+        for o in case_overrides(case, self.overrides):
             cmd += ["--set", o]
         return cmd
 

@@ -32,6 +32,14 @@ def case_environment(extra=None):
     return env
 
 
+def launched_rank():
+    """This process's rank under a launcher (0 when started alone)."""
+    for key in ("OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"):
+        if os.environ.get(key, "").isdigit():
+            return int(os.environ[key])
+    return 0
+
+
 def launched_ranks():
     """The rank count a launcher gave this process (1 when started alone)."""
     for key in ("OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE"):

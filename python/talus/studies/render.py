@@ -1,10 +1,8 @@
-#!/usr/bin/env python3
 """Draws a run's configuration at a chosen time as a PNG, seen from the side (x-z) or from the
 top (x-y): true particle surfaces (shapes.vtu) or discs (spheres), coloured by speed.
 
-Usage: render.py RESULTS_DIR [--time T] [--view side|top] [--out FILE.png]
+Usage: python3 -m talus render RESULTS_DIR [--time T] [--view side|top] [--out FILE.png]
 Reads RESULTS_DIR/vtk/*.pvd (written when the scenario sets run.vtk_interval)."""
-import argparse
 import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -139,16 +137,3 @@ def draw(results, time: float = float("inf"), view: str = "side", out=None) -> P
     plt.close(fig)
     return out
 
-
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("results")
-    parser.add_argument("--time", type=float, default=float("inf"))
-    parser.add_argument("--view", choices=["side", "top"], default="side")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    print(draw(args.results, args.time, args.view, args.out))
-
-
-if __name__ == "__main__":
-    main()

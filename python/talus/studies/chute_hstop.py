@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """The h_stop search of Weinhart et al. 2012, Sect. 6, for one or more base roughnesses lambda.
 
 From H = H0 and theta = theta0 the angle rises by 1 deg until the layer flows; from then on the
@@ -9,20 +8,16 @@ and free slots run the possible next cases of a staircase ahead of its result (t
 needed is stopped). Writes DIR/hstop_runs.csv (every case) and DIR/hstop_intervals.csv (for each
 height the angle interval, for each angle the height interval, where arrested turns to flowing).
 
-Under mpirun the cases are spread over the ranks (tools/case_pool.py); --slurm FILE writes a
-job array of one staircase (one lambda) per task instead (tools/slurm_array.py).
+Under mpirun the cases are spread over the ranks (case_pool.py); --slurm FILE writes a
+job array of one staircase (one lambda) per task instead (slurm_array.py).
 
-usage: chute_hstop.py SCENARIO --talus BIN [--lambda 1,0.5] [--jobs 2] [--out DIR] [--h0 4]
+Usage: python3 -m talus hstop SCENARIO [--talus BIN] [--lambda 1,0.5] [--jobs 2] [--out DIR] [--h0 4]
        [--theta0 21] [--h-max 40] [--set KEY=VALUE ...] [--slurm FILE [--slurm-time LIMIT]]
        [--case-index I]
 """
-import argparse
 import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import chute_runs  # noqa: E402
-import slurm_array  # noqa: E402
+from . import chute_runs, engine, slurm_array
 
 
 class Staircase:
@@ -108,30 +103,11 @@ def replay(runner, stairs):
     return rows
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("scenario")
-    ap.add_argument("--talus", required=True, help="the talus executable")
-    ap.add_argument("--lambda", dest="lambdas", default="1", help="comma-separated base diameters")
-    ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--out", default="results/hstop")
-    ap.add_argument("--h0", type=float, default=4)
-    ap.add_argument("--theta0", type=float, default=21)
-    ap.add_argument("--h-max", type=float, default=40)
-    ap.add_argument("--theta-min", type=float, default=10)
-    ap.add_argument("--max-cases", type=int, default=60)
-    ap.add_argument("--end-time", type=float, default=500, help="Sect. 6: arrest within 500 time units")
-    ap.add_argument("--checkpoint-interval", type=float, default=50,
-                    help="time units between checkpoints of each case, which an interrupted case resumes from")
-    ap.add_argument("--set", dest="overrides", action="append", default=[], help="extra scenario override")
-    slurm_array.add_options(ap)
-    a = ap.parse_args(argv)
+def run(a):
+    """`python3 -m talus hstop`: a as parsed by talus.studies.cli, with the talus executable
+    found and the command line (a.argv) for Slurm array tasks."""
     lambdas = [float(x) for x in a.lambdas.split(",")]
     slurm_array.check_index(a.case_index, len(lambdas), "hstop")
-    if a.slurm:
-        args = slurm_array.without_option(sys.argv[1:] if argv is None else argv, "--slurm")
-        slurm_array.write_script(a.slurm, len(lambdas), "talus-hstop", a.out, args, a.slurm_time)
-        return
 
     # The arrest test of Sect. 6, and the flow height h from a short average at the end.
     overrides = ["run.end_time=%r" % a.end_time, "chute.flow_state.stop_when_arrested=true",
@@ -139,7 +115,14 @@ def main(argv=None):
                  "chute.coarse_graining.start=%r" % max(0.0, a.end_time - 20), "chute.coarse_graining.interval=0.1",
                  "chute.coarse_graining.extra_widths=[]", "run.checkpoint_interval=%r" % a.checkpoint_interval,
                  "run.checkpoint_keep=1"] + a.overrides
+    first = (lambdas[0] if a.case_index is None else lambdas[a.case_index], a.h0, a.theta0)
+    engine.check_scenario(a.talus, a.scenario, chute_runs.case_overrides(first, overrides))
+    if a.slurm:
+        slurm_array.write_script(a.slurm, len(lambdas), "talus-hstop", a.out, slurm_array.task_argv(a.argv, a.talus),
+                                 a.slurm_time)
+        return
     runner = chute_runs.Runner(a.talus, a.scenario, a.out, a.jobs, overrides)
+
     def staircases(chosen):
         return [Staircase(lam, a.h0, a.theta0, a.h_max, a.theta_min, a.max_cases) for lam in chosen]
 
@@ -194,6 +177,3 @@ def main(argv=None):
     write_intervals(os.path.join(a.out, "hstop_intervals.csv"), intervals(rows))
     print("h_stop search: %d cases; %s/hstop_runs.csv, %s/hstop_intervals.csv" % (len(rows), a.out, a.out))
 
-
-if __name__ == "__main__":
-    main()

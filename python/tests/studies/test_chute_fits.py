@@ -3,14 +3,11 @@
 known parameters (Weinhart et al. 2012, Tables 1-2 and Eqs. 52-53) with Gaussian noise, to
 within four of its own standard errors, and the friction law (Eq. 37) returns tan(theta)
 exactly on the flow rule (Eq. 36) it was derived from. Deterministic (fixed seed)."""
-import os
-import sys
 import unittest
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import chute_fits as cf  # noqa: E402
+from talus.studies import chute_fits as cf
 
 HS = {"A": 3.355, "delta1": 17.708, "delta2": 32.780}  # Table 1, lambda = 1
 

@@ -1,27 +1,22 @@
-#!/usr/bin/env python3
 """Runs one scenario for N seeds and aggregates the summaries: DIR/seed_<k>/ -> DIR/ensemble.json,
 DIR/ensemble.csv (one row per measurement) and DIR/runs.csv (one row per run).
 
-Usage: dam_break_ensemble.py run FILE --seeds N [--first-seed S] --jobs J --out DIR [--set k=v ...]
-                             [--slurm FILE [--slurm-time LIMIT]] [--case-index I]
-       dam_break_ensemble.py aggregate DIR      (aggregate the seed_* folders already in DIR)
+Usage: python3 -m talus ensemble FILE --seeds N [--first-seed S] [--jobs J] --out DIR [--set k=v ...]
+                                [--talus BIN] [--slurm FILE [--slurm-time LIMIT]] [--case-index I]
+       python3 -m talus aggregate DIR      (aggregate the seed_* folders already in DIR)
 
 Huet et al. 2021 repeat every case with different initial microstructures (Sec. IV A, Fig. 9:
 three to five runs per case) to tell repeatable cases from intermittent ones. The verdict rule:
 with at least two runs, a case is "intermittent" when some runs end stable (regime == "stable")
 and others do not (0 < stable runs < runs), "repeatable" otherwise; one run is "undetermined".
 """
-import argparse
-import csv
 import json
 import math
 import os
 import sys
 from pathlib import Path
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import case_pool  # noqa: E402
-import slurm_array  # noqa: E402
+from . import case_pool, engine, slurm_array
 
 VERDICT_RULE = ("runs >= 2: intermittent if 0 < stable runs < runs (Huet et al. 2021, Fig. 9), "
                 "repeatable otherwise; runs < 2: undetermined")
@@ -153,7 +148,7 @@ def write_ensemble(folder: Path, meta: dict | None = None) -> dict:
 
 
 def run_all(jobs_list, jobs: int, talus: str) -> list:
-    """Runs every (scenario, out, overrides) through a case pool (tools/case_pool.py: `jobs` at
+    """Runs every (scenario, out, overrides) through a case pool (case_pool.py: `jobs` at
     a time here, one per rank under mpirun), one thread each; returns the failed ones. Finished
     runs are not run again, and cut-off ones resume."""
     pool = case_pool.open_pool(jobs, "ensemble")
@@ -189,7 +184,7 @@ def run_study(jobs_list, args, name: str, out: Path):
     slurm_array.check_index(args.case_index, len(jobs_list), name)
     if args.slurm:
         slurm_array.write_script(args.slurm, len(jobs_list), "talus-" + name, out,
-                                 slurm_array.without_option(sys.argv[1:], "--slurm"), args.slurm_time)
+                                 slurm_array.task_argv(args.argv, args.talus), args.slurm_time)
         return None
     failed = run_all(jobs_list if args.case_index is None else [jobs_list[args.case_index]], args.jobs, args.talus)
     if not all_finished(jobs_list):
@@ -205,38 +200,28 @@ def seed_jobs(scenario: str, out: Path, seeds: int, first_seed: int, overrides: 
             for k in range(first_seed, first_seed + seeds)]
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    sub = parser.add_subparsers(dest="command", required=True)
-    run = sub.add_parser("run")
-    run.add_argument("scenario")
-    run.add_argument("--seeds", type=int, required=True)
-    run.add_argument("--first-seed", type=int, default=1)
-    run.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
-    run.add_argument("--out", required=True)
-    run.add_argument("--set", action="append", default=[], dest="overrides")
-    run.add_argument("--talus", default="talus", help="the talus executable")
-    slurm_array.add_options(run)
-    agg = sub.add_parser("aggregate")
-    agg.add_argument("dir")
-    args = parser.parse_args()
-    if args.command == "aggregate":
-        record = write_ensemble(Path(args.dir))
-    else:
-        if args.seeds < 1 or args.jobs < 1:
-            sys.exit("ensemble: --seeds and --jobs must be at least 1")
-        out = Path(args.out)
-        failed = run_study(seed_jobs(args.scenario, out, args.seeds, args.first_seed, args.overrides), args, "ensemble", out)
-        if failed is None:
-            return
-        record = write_ensemble(out, {"case": args.scenario, "overrides": args.overrides})
-        if failed:
-            print(f"ensemble: {len(failed)} run(s) failed: {', '.join(map(str, failed))}", file=sys.stderr)
+def run(args) -> None:
+    """`python3 -m talus ensemble`: args as parsed by talus.studies.cli, with the talus
+    executable found and the command line (args.argv) for Slurm array tasks."""
+    out = Path(args.out)
+    jobs = seed_jobs(args.scenario, out, args.seeds, args.first_seed, args.overrides)
+    engine.check_scenario(args.talus, args.scenario, jobs[0][2])
+    failed = run_study(jobs, args, "ensemble", out)
+    if failed is None:
+        return
+    record = write_ensemble(out, {"case": args.scenario, "overrides": args.overrides})
+    if failed:
+        print(f"ensemble: {len(failed)} run(s) failed: {', '.join(map(str, failed))}", file=sys.stderr)
+    report(out, record)
+
+
+def aggregate_folder(folder) -> None:
+    """`python3 -m talus aggregate DIR`: the tables of the seed_* folders already in DIR."""
+    report(folder, write_ensemble(Path(folder)))
+
+
+def report(folder, record) -> None:
     line = f"{record['runs']} runs"
     if "verdict" in record:
         line += f", stable fraction {record['stable_fraction']:.2f}, {record['verdict']}"
-    print(f"{args.dir if args.command == 'aggregate' else args.out}/ensemble.json: {line}")
-
-
-if __name__ == "__main__":
-    main()
+    print(f"{folder}/ensemble.json: {line}")

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Closure fits of Weinhart et al. 2012 with standard errors, from a chute sweep and h_stop search:
 h_stop(theta) (Eq. 35 and Eq. 38), the flow rule F = beta h/h_stop - gamma (Eqs. 36, 47), the
 friction law it implies (Eqs. 37, 50), the bulk density (Eq. 52), the stress ratio K (Eq. 53)
@@ -6,11 +5,10 @@ and the shape factor alpha (Eqs. 54-55). Angles in degrees, lengths in particle 
 Each fit returns its parameters, their standard errors (square roots of the diagonal of the
 least-squares covariance, scaled by the residual variance) and err of Eq. 49.
 
-usage: chute_fits.py DIR   (reads DIR/hstop_intervals.csv and DIR/sweep_runs.csv or
+Usage: python3 -m talus fit DIR   (reads DIR/hstop_intervals.csv and DIR/sweep_runs.csv or
        DIR/hstop_runs.csv; fits each base roughness lambda found there; writes DIR/fits.json and
        DIR/fits.md, the analogue of Tables 1-2)
 """
-import argparse
 import csv
 import json
 import math
@@ -227,22 +225,16 @@ def markdown(fits):
     return "\n".join(lines) + "\n"
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("dir")
-    a = ap.parse_args(argv)
-    intervals = _read(os.path.join(a.dir, "hstop_intervals.csv"))
-    runs = _read(os.path.join(a.dir, "sweep_runs.csv")) + _read(os.path.join(a.dir, "hstop_runs.csv"))
+def fit_folder(folder):
+    """Fits every lambda of a sweep / h_stop folder; writes fits.json and fits.md into it."""
+    intervals = _read(os.path.join(folder, "hstop_intervals.csv"))
+    runs = _read(os.path.join(folder, "sweep_runs.csv")) + _read(os.path.join(folder, "hstop_runs.csv"))
     lams = sorted({r["lambda"] for r in intervals} | {r["lambda"] for r in runs})
     fits = [fit_all(intervals, runs, lam) for lam in lams]
     clean = json.loads(json.dumps(fits, default=float))
     for name, text in (("fits.json", json.dumps(clean, indent=2) + "\n"), ("fits.md", markdown(fits))):
-        tmp = os.path.join(a.dir, name + ".tmp")
+        tmp = os.path.join(folder, name + ".tmp")
         with open(tmp, "w") as f:
             f.write(text)
-        os.replace(tmp, os.path.join(a.dir, name))
+        os.replace(tmp, os.path.join(folder, name))
     sys.stdout.write(markdown(fits))
-
-
-if __name__ == "__main__":
-    main()

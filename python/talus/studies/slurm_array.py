@@ -1,4 +1,4 @@
-"""Slurm job arrays for the study tools (`--slurm FILE`), for clusters that schedule jobs, not
+"""Slurm job arrays for the studies (`--slurm FILE`), for clusters that schedule jobs, not
 ranks. Task i of the array runs the study's part i (`--case-index i`: one case of a sweep,
 ensemble or flow map, one base roughness of an h_stop search) on one core; each task, once its
 part is done, writes the study's tables if every part is finished, so the last task to end
@@ -35,12 +35,19 @@ def check_index(index, parts, name):
         sys.exit("%s: --case-index %d: the study has %d parts (0 to %d)" % (name, index, parts, parts - 1))
 
 
+def task_argv(argv, talus):
+    """A study's `python3 -m talus` arguments for its array tasks: without --slurm, and with the
+    talus executable this study found, so that every task runs the same one."""
+    return without_option(without_option(argv, "--slurm"), "--talus") + ["--talus", talus]
+
+
 def write_script(path, parts, job_name, log_dir, argv, time_limit=None):
-    """Writes an sbatch script of `parts` array tasks, each running this tool (sys.argv[0]) with
-    `argv` (the tool's arguments without --slurm) plus `--case-index $SLURM_ARRAY_TASK_ID`, from
-    the directory it was written in. Paths in argv stay as given, relative to that directory."""
-    tool = os.path.abspath(sys.argv[0])
-    command = " ".join(shlex.quote(a) for a in [sys.executable, tool] + list(argv))
+    """Writes an sbatch script of `parts` array tasks, each running `python3 -m talus` with
+    `argv` (task_argv) plus `--case-index $SLURM_ARRAY_TASK_ID`, from the directory it was
+    written in, with this package on PYTHONPATH. Paths in argv stay as given, relative to
+    that directory."""
+    package_parent = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    command = " ".join(shlex.quote(a) for a in [sys.executable, "-m", "talus"] + list(argv))
     lines = [
         "#!/bin/bash",
         "# %s as a Slurm job array: sbatch %s" % (job_name, os.path.basename(path)),
@@ -56,6 +63,7 @@ def write_script(path, parts, job_name, log_dir, argv, time_limit=None):
         "set -euo pipefail",
         "cd %s" % shlex.quote(os.getcwd()),
         "export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE",
+        "export PYTHONPATH=%s${PYTHONPATH:+:$PYTHONPATH}" % shlex.quote(package_parent),
         "exec %s --case-index \"$SLURM_ARRAY_TASK_ID\"" % command,
         "",
     ]

@@ -1,8 +1,7 @@
-#!/usr/bin/env python3
 """Figures of the dam-break study (Huet et al. 2021) and of the hopper validation (Appendix B 2)
 from results folders, as PNG files in the folder.
 
-Usage: dam_break_plots.py DIR [--snapshot-times T1,T2,...]
+Usage: python3 -m talus plot DIR [--snapshot-times T1,T2,...]
   DIR a dam-break run   runout and height profiles (Fig. 5), speeds (Fig. 12), force PDF
                         (Fig. 15), fabric rose (Fig. 17), side snapshots (Figs. 6-8, needs
                         run.vtk_interval; times in s after the gate opened, default 0, 1, 2, 3, 5
@@ -13,7 +12,6 @@ Usage: dam_break_plots.py DIR [--snapshot-times T1,T2,...]
                         centre-of-mass ratio (Fig. 24) against a; repose angle against the swept
                         value for a hopper sweep (Fig. 23)
   DIR a hopper run      the pile's surface profile with the fitted flanks"""
-import argparse
 import json
 import sys
 from pathlib import Path
@@ -24,7 +22,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-TOOLS = Path(__file__).resolve().parent
+from . import plot_timeseries
+
 MARKERS = {"collapsed": ("o", "tab:blue"), "fractured": ("s", "tab:green"), "stable": ("^", "tab:orange")}
 
 
@@ -131,8 +130,7 @@ def snapshots(folder: Path, summary: dict, times) -> None:
     if not (folder / "vtk" / "particles.pvd").exists():
         print(f"{folder}: no vtk/ frames (set run.vtk_interval) - no snapshots", file=sys.stderr)
         return
-    sys.path.insert(0, str(TOOLS))
-    import render
+    from . import render  # VTK loads only when snapshots are drawn
 
     db = summary.get("dam_break", {})
     gate = db.get("gate_open_time", 0.0)
@@ -184,8 +182,6 @@ def run_figures(folder: Path, snapshot_times) -> None:
     if (folder / "fabric.csv").exists():
         fabric_rose(folder, [read_csv(folder / "fabric.csv")], "branch vectors in the xz plane, before the gate opens")
     snapshots(folder, summary, snapshot_times)
-    sys.path.insert(0, str(TOOLS))
-    import plot_timeseries
     plot_timeseries.main(folder)
 
 
@@ -333,13 +329,9 @@ def pile_figure(folder: Path) -> None:
     save(fig, folder / "pile_profile.png")
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("dir")
-    parser.add_argument("--snapshot-times", help="s after the gate opened, comma separated")
-    args = parser.parse_args()
-    folder = Path(args.dir)
-    times = [float(t) for t in args.snapshot_times.split(",")] if args.snapshot_times else None
+def draw(folder: Path, times=None) -> None:
+    """The figures of whatever study `folder` holds; `times` (s after the gate opened) are the
+    side snapshots' times of a single run."""
     if (folder / "sweep.json").exists():
         sweep_figures(folder)
     elif (folder / "ensemble.json").exists():
@@ -348,12 +340,6 @@ def main() -> None:
         run_figures(folder, times)
     elif (folder / "pile_profile.csv").exists():
         pile_figure(folder)
-        sys.path.insert(0, str(TOOLS))
-        import plot_timeseries
         plot_timeseries.main(folder)
     else:
-        sys.exit(f"dam_break_plots: {folder} holds no dam-break, ensemble, sweep or hopper results")
-
-
-if __name__ == "__main__":
-    main()
+        sys.exit(f"talus plot: {folder} holds no dam-break, ensemble, sweep or hopper results")

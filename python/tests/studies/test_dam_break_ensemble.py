@@ -1,18 +1,15 @@
 #!/usr/bin/env python3
-"""Checks which runs an ensemble or sweep runs again (tools/dam_break_ensemble.py, run_all): a
+"""Checks which runs an ensemble or sweep runs again (talus.studies.dam_break_ensemble, run_all): a
 finished run is left alone; one cut off by Ctrl-C or a time limit (its summary says
 "interrupted") resumes from its checkpoint; one killed before its first checkpoint starts
 again; a cut-off run never enters the statistics. A fake talus records each command."""
 import json
-import os
 import stat
-import sys
 import tempfile
 import unittest
 from pathlib import Path
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import dam_break_ensemble  # noqa: E402
+from talus.studies import dam_break_ensemble
 
 # Logs its arguments, then writes the summary of a run that ended by itself.
 FAKE_TALUS = r"""#!/usr/bin/env python3

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks tools/case_pool.py: every case runs once, in its own process, with its exit status
+"""Checks talus.studies.case_pool: every case runs once, in its own process, with its exit status
 reported; a cancelled case stops; cases never see the launcher's MPI variables. Run alone (a
 LocalPool of two slots) or under `mpirun -n 3` (rank 0 drives, ranks 1 and 2 serve); the same
 assertions hold either way, and rank 0 also checks that the cases ran on more than one rank.
@@ -10,8 +10,7 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import case_pool  # noqa: E402
+from talus.studies import case_pool
 
 # A case: records which process ran it and whether it saw an MPI variable, then exits `status`.
 CASE = r"""

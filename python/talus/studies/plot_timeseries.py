@@ -1,6 +1,4 @@
-#!/usr/bin/env python3
 """Plots a run's energies and contact count against time: DIR/timeseries.csv -> DIR/energies.png."""
-import sys
 from pathlib import Path
 
 import matplotlib
@@ -31,6 +29,3 @@ def main(folder: Path) -> None:
     fig.tight_layout()
     fig.savefig(folder / "energies.png", dpi=120)
 
-
-if __name__ == "__main__":
-    main(Path(sys.argv[1]))

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Figures of the chute study of Weinhart et al. 2012 from a results folder:
   a run with depth profiles (chute_profile*.csv): profiles.png with the volume fraction for
   every coarse-graining width (Fig. 6), the stresses with the lithostatic weight (Fig. 7) and the
@@ -6,13 +5,11 @@
   a sweep or h_stop search (sweep_runs.csv, hstop_runs.csv): flow_map.png, flow states in the
   (theta, h) plane with the h_stop fits of fits.json (Figs. 4, 9, 10), and froude.png, F against
   h / h_stop (Fig. 11).
-usage: plot_chute.py DIR"""
+Usage: python3 -m talus plot DIR"""
 import csv
 import glob
 import json
-import os
 import re
-import sys
 from pathlib import Path
 
 import matplotlib
@@ -21,8 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import chute_fits  # noqa: E402
+from . import chute_fits, plot_timeseries  # noqa: E402
 
 MARKERS = {"arrested": ("o", "k"), "steady": ("o", "none"), "accelerating": ("*", "C3"), "layered": ("x", "C0"),
            "oscillating": ("D", "none"), "decelerating": ("v", "C1"), "undetermined": ("?", "C7")}
@@ -152,9 +148,5 @@ def main(folder: Path):
     if (folder / "sweep_runs.csv").exists() or (folder / "hstop_runs.csv").exists():
         flow_map(folder)
     if (folder / "timeseries.csv").exists():
-        import plot_timeseries
         plot_timeseries.main(folder)
 
-
-if __name__ == "__main__":
-    main(Path(sys.argv[1]))
