@@ -125,9 +125,25 @@ int command_resume(const std::string& dir, bool quiet, int threads, std::optiona
                   {latest.string(), checkpoint_interval});
 }
 
+// The executable itself, for the tools that start runs.
+std::string self_path() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("talus") : self.string();
+}
+
+// The scripts of an installed talus (cmake --install) sit in PREFIX/share/talus/tools beside
+// its PREFIX/bin; a talus in the build folder uses the sources' tools/.
+std::filesystem::path tools_dir() {
+  const std::filesystem::path installed =
+      std::filesystem::path(self_path()).parent_path().parent_path() / TALUS_INSTALLED_TOOLS_DIR;
+  std::error_code ec;
+  return std::filesystem::is_directory(installed, ec) ? installed : std::filesystem::path(TALUS_TOOLS_DIR);
+}
+
 // The figures are drawn by the project's matplotlib scripts (Debian python3-matplotlib).
 int run_tool(const std::string& script, std::vector<std::string> args) {
-  const std::string path = std::string(TALUS_TOOLS_DIR) + "/" + script;
+  const std::string path = (tools_dir() / script).string();
   args.insert(args.begin(), {"/usr/bin/python3", path});
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -173,13 +189,6 @@ int command_coarse_grain(const std::filesystem::path& dir, const CoarseGrainRequ
               out.string().c_str(), cg.snapshots, cg.first_time, cg.last_time, grid.size(),
               cg.read_seconds / cg.snapshots, cg.coarse_grain_seconds / cg.snapshots);
   return 0;
-}
-
-// The executable itself, for the tools that start runs.
-std::string self_path() {
-  std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string("talus") : self.string();
 }
 
 // `talus plot DIR`: dam-break figures for a dam-break run, an ensemble or a sweep; the repose
