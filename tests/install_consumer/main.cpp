@@ -1,6 +1,6 @@
 // Two glass beads meet head-on, built and stepped through Talus' installed headers. Exits
 // non-zero unless the collision behaves as the linear spring-dashpot says: momentum kept, the
-// beads apart again afterwards, and each rebounding at the chosen restitution.
+// beads apart again afterwards, and each rebounding at about the chosen restitution.
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -47,7 +47,7 @@ int main() {
   talus::WorldSettings settings;
   settings.domain = {{-0.01, -0.01, -0.01}, {0.01, 0.01, 0.01}};
   settings.gravity = {0, 0, 0};
-  settings.time_step = contact_time / 50;
+  settings.time_step = contact_time / 200;
   talus::World world(settings);
   world.contacts().resize(1, 1);
   world.contacts().set_pair(0, 0, contact);
@@ -71,6 +71,9 @@ int main() {
   ok = check(gap > 0 && world.diagnostics().contacts == 0, "beads apart after the collision") && ok;
   ok = check(p.velocity[0][0] * p.velocity[1][0] < 0 && (p.velocity[1][0] - p.velocity[0][0]) * (p.position[1][0] - p.position[0][0]) > 0,
              "beads moving away from each other") && ok;
-  ok = check(std::abs(rebound / kSpeed - kRestitution) < 0.02, "rebound at the chosen restitution (to 2 %)") && ok;
+  // The contact ends when the dashpot would start to pull (no tension), a little before the
+  // overlap closes, so the beads leave a little faster than the damped oscillator's e says.
+  const double restitution = rebound / kSpeed;
+  ok = check(restitution > kRestitution && restitution < kRestitution + 0.05, "rebound at the chosen restitution, up to the no-tension end") && ok;
   return ok ? 0 : 1;
 }
