@@ -4,6 +4,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
+  dpkg-dev file  # cpack -G DEB: dpkg-shlibdeps finds the packages' library dependencies
   libgtest-dev libgmock-dev libbenchmark-dev
   libtomlplusplus-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libqhull-dev
   libhdf5-dev
