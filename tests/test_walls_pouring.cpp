@@ -48,18 +48,28 @@ TEST(Walls, RemovedWallReleasesTheParticle) {
   EXPECT_EQ(w.wall_force(0).x, 0.0);
 }
 
-TEST(Pouring, BatchesArriveWithoutOverlaps) {
-  WorldSettings s;
-  s.domain = {{0, 0, 0}, {0.05, 0.05, 0.2}};
-  s.time_step = 1e-5;
-  World w(s);
-  w.contacts().resize(1, 1);
-  const ContactParams c = testing::glass_contact(0.002, 2500, 0.5, 1.0);
-  w.contacts().set_pair(0, 0, c);
-  w.contacts().set_wall(0, 0, c);
-  Wall floor;
-  floor.normal = {0, 0, 1};
-  w.add_wall(floor);
+// A 5 x 5 x 20 cm box of glass beads with a floor, for the pours below.
+class Pouring : public ::testing::Test {
+ protected:
+  static WorldSettings settings() {
+    WorldSettings s;
+    s.domain = {{0, 0, 0}, {0.05, 0.05, 0.2}};
+    s.time_step = 1e-5;
+    return s;
+  }
+  Pouring() : w(settings()) {
+    w.contacts().resize(1, 1);
+    const ContactParams c = testing::glass_contact(0.002, 2500, 0.5, 1.0);
+    w.contacts().set_pair(0, 0, c);
+    w.contacts().set_wall(0, 0, c);
+    Wall floor;
+    floor.normal = {0, 0, 1};
+    w.add_wall(floor);
+  }
+  World w;
+};
+
+TEST_F(Pouring, BatchesArriveWithoutOverlaps) {
   PourSpec spec;
   spec.density = 2500;
   spec.radius_min = 0.0015;
@@ -69,7 +79,7 @@ TEST(Pouring, BatchesArriveWithoutOverlaps) {
   spec.total = 60;
   spec.batch = 20;
   spec.interval = 0.02;
-  Pouring pour(spec, 5);
+  talus::Pouring pour(spec, 5);
   while (w.time() < 0.1) {
     pour.pour_due(w);
     w.step();
@@ -80,18 +90,7 @@ TEST(Pouring, BatchesArriveWithoutOverlaps) {
 }
 
 // A pour region that starts below the floor's reach: no particle is poured into the floor.
-TEST(Pouring, KeepsClearOfWalls) {
-  WorldSettings s;
-  s.domain = {{0, 0, 0}, {0.05, 0.05, 0.2}};
-  s.time_step = 1e-5;
-  World w(s);
-  w.contacts().resize(1, 1);
-  const ContactParams c = testing::glass_contact(0.002, 2500, 0.5, 1.0);
-  w.contacts().set_pair(0, 0, c);
-  w.contacts().set_wall(0, 0, c);
-  Wall floor;
-  floor.normal = {0, 0, 1};
-  w.add_wall(floor);
+TEST_F(Pouring, KeepsClearOfWalls) {
   PourSpec spec;
   spec.density = 2500;
   spec.radius_min = spec.radius_max = 0.002;
@@ -100,7 +99,7 @@ TEST(Pouring, KeepsClearOfWalls) {
   spec.total = 20;
   spec.batch = 20;
   spec.interval = 1;
-  Pouring pour(spec, 5);
+  talus::Pouring pour(spec, 5);
   EXPECT_GT(pour.pour_due(w), 0u);
   for (std::size_t i = 0; i < w.particles().owned; ++i) EXPECT_GE(w.particles().position[i].z, 0.002) << i;
 }

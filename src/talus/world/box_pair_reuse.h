@@ -1,5 +1,5 @@
 #pragma once
-// Narrow-phase reuse for touching box pairs (issue 29; the idea of Box2D v3's contact recycling
+// Narrow-phase reuse for touching box pairs (the idea of Box2D v3's contact recycling
 // and Bullet's persistent manifolds, kept exact): a touching part pair keeps the feature of its
 // last full SAT query, the axis (reference face, or edge pair; box_box.h), with a reserve of
 // motion (box_box_axis_reserve) within which no other of the 15 axes can take over. While the
