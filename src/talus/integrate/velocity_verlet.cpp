@@ -41,11 +41,20 @@ inline bool isotropic(const Vec3& inv_i) { return inv_i.x == inv_i.y && inv_i.y 
   p.angular_velocity[i] += h * q.rotate(hadamard(p.inv_inertia[i], q.rotate_inverse(p.torque[i])));
 }
 
-// a + s b with one rounding, written out: the compiler may fuse a * and a + or not depending on
-// the code around them, and the fused kicks of World::run must give the bits of separate ones.
-inline Vec3 fma(double s, const Vec3& b, const Vec3& a) {
-  return {std::fma(s, b.x, a.x), std::fma(s, b.y, a.y), std::fma(s, b.z, a.z)};
+// a + s b rounded the same way wherever it is written: the compiler may fuse a * and a + or
+// not depending on the code around them, and the fused kicks of World::run must give the bits
+// of separate ones. Where the CPU has a fused multiply-add, std::fma is that one instruction;
+// where it has none the compiler cannot fuse either, and std::fma would be a call into libm
+// that costs a tenth of a sphere step.
+inline double fused(double s, double b, double a) {
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+  return std::fma(s, b, a);
+#else
+  return s * b + a;
+#endif
 }
+
+inline Vec3 fma(double s, const Vec3& b, const Vec3& a) { return {fused(s, b.x, a.x), fused(s, b.y, a.y), fused(s, b.z, a.z)}; }
 
 // A sphere: no orientation to track, and its spin takes the torque straight (equal moments).
 inline bool plain_sphere(const ParticleStore& p, std::size_t i, const Vec3& inv_i) {
@@ -186,7 +195,7 @@ struct SphereArrays {
   const Vec3 x = fma(e.dt, v, a.position[i]);
   a.position[i] = x;
   const Vec3 d = x - a.at_build[i];
-  return std::fma(d.z, d.z, std::fma(d.x, d.x, d.y * d.y));
+  return fused(d.z, d.z, fused(d.x, d.x, d.y * d.y));
 }
 
 // One particle's step end with a next step: the sphere path above for a plain sphere, else the
@@ -270,10 +279,10 @@ double end_step(ParticleStore& p, std::size_t begin, std::size_t end, const Step
   }
   const SphereArrays a{p.position.data(), p.velocity.data(), p.angular_velocity.data(),
                        p.force.data(),    p.torque.data(),   e.position_at_build};
-  const double* __restrict inv_mass = p.inv_mass.data();
-  const Vec3* __restrict inv_inertia = p.inv_inertia.data();
-  Vec3* __restrict force = p.force.data();
-  Vec3* __restrict torque = p.torque.data();
+  [[maybe_unused]] const double* __restrict inv_mass = p.inv_mass.data();
+  [[maybe_unused]] const Vec3* __restrict inv_inertia = p.inv_inertia.data();
+  [[maybe_unused]] Vec3* __restrict force = p.force.data();
+  [[maybe_unused]] Vec3* __restrict torque = p.torque.data();
 #ifdef TALUS_END_STEP_AVX2
   const Vec3& g = e.gravity;
   const Lanes3 gravity{_mm256_setr_pd(g.x, g.y, g.z, g.x), _mm256_setr_pd(g.y, g.z, g.x, g.y),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace talus {
@@ -31,6 +32,45 @@ void set_state(ParticleStore& p, std::size_t k, const GhostState& s) {
   p.torque[k] = {};
 }
 
+// The state of a sphere's copy between rebuilds: its orientation does not change.
+struct SphereGhostState {
+  Vec3 position, velocity, angular_velocity;
+};
+
+SphereGhostState sphere_state_of(const ParticleStore& p, std::size_t k, int axis, double shift) {
+  SphereGhostState s{p.position[k], p.velocity[k], p.angular_velocity[k]};
+  s.position[axis] += shift;
+  return s;
+}
+
+void set_sphere_state(ParticleStore& p, std::size_t k, const SphereGhostState& s) {
+  p.position[k] = s.position;
+  p.velocity[k] = s.velocity;
+  p.angular_velocity[k] = s.angular_velocity;
+  p.force[k] = {};
+  p.torque[k] = {};
+}
+
+// One forward pass in the state type T: pack, swap with the neighbours, unpack.
+template <class T, class Pack, class Unpack>
+void forward_pass(const Communicator& comm, const std::vector<std::uint32_t>& sent, std::size_t first,
+                  std::size_t received, int to, int from, int tag, std::vector<std::byte>& out,
+                  std::vector<std::byte>& in, Pack pack, Unpack unpack) {
+  out.resize(sent.size() * sizeof(T));
+  for (std::size_t n = 0; n < sent.size(); ++n) {
+    const T s = pack(sent[n]);
+    std::memcpy(out.data() + n * sizeof(T), &s, sizeof(T));
+  }
+  in.resize(received * sizeof(T));
+  comm.exchange_sized(out, to, from, tag, in);
+  if (in.size() != received * sizeof(T)) throw std::logic_error("halo forward exchange out of step");
+  for (std::size_t g = 0; g < received; ++g) {
+    T s;
+    std::memcpy(&s, in.data() + g * sizeof(T), sizeof(T));
+    unpack(first + g, s);
+  }
+}
+
 struct GhostConstants {
   double radius, inv_mass, mass;
   Vec3 inv_inertia;
@@ -56,8 +96,9 @@ CellCoord cell_across(const CellGrid& grid, const Vec3& x, int axis, int step) {
 }  // namespace
 
 void HaloExchange::create(ParticleStore& p, const RankGrid& ranks, const CellGrid& grid, double band,
-                          std::vector<CellCoord>& cell_of) {
+                          std::vector<CellCoord>& cell_of, bool oriented) {
   ranks_ = &ranks;
+  oriented_ = oriented;
   passes_.clear();
   int tag = kCreateTag;
   for (const int axis : ranks.stage_axes()) {
@@ -132,25 +173,27 @@ std::vector<std::uint32_t> HaloExchange::sent_indices() const {
 // Between rebuilds both sides know the message sizes: one message each way.
 void HaloExchange::forward(ParticleStore& p) const {
   for (const Pass& pass : passes_) {
-    out_.clear();
-    ByteWriter w(out_);
-    for (const std::uint32_t k : pass.sent) w.put(state_of(p, k, pass.axis, pass.shift));
-    in_.resize(pass.received * sizeof(GhostState));
-    ranks_->comm->exchange_sized(out_, pass.to, pass.from, kForwardTag + pass.tag - kCreateTag, in_);
-    if (in_.size() != pass.received * sizeof(GhostState)) throw std::logic_error("halo forward exchange out of step");
-    ByteReader r(in_);
-    for (std::size_t g = 0; g < pass.received; ++g) set_state(p, pass.first + g, r.get<GhostState>());
+    const int tag = kForwardTag + pass.tag - kCreateTag;
+    if (oriented_)
+      forward_pass<GhostState>(
+          *ranks_->comm, pass.sent, pass.first, pass.received, pass.to, pass.from, tag, out_, in_,
+          [&](std::uint32_t k) { return state_of(p, k, pass.axis, pass.shift); },
+          [&](std::size_t k, const GhostState& s) { set_state(p, k, s); });
+    else
+      forward_pass<SphereGhostState>(
+          *ranks_->comm, pass.sent, pass.first, pass.received, pass.to, pass.from, tag, out_, in_,
+          [&](std::uint32_t k) { return sphere_state_of(p, k, pass.axis, pass.shift); },
+          [&](std::size_t k, const SphereGhostState& s) { set_sphere_state(p, k, s); });
   }
 }
 
 void HaloExchange::reverse(ParticleStore& p) const {
   for (auto it = passes_.rbegin(); it != passes_.rend(); ++it) {
     const Pass& pass = *it;
-    out_.clear();
-    ByteWriter w(out_);
+    out_.resize(pass.received * 2 * sizeof(Vec3));
     for (std::size_t g = 0; g < pass.received; ++g) {
-      w.put(p.force[pass.first + g]);
-      w.put(p.torque[pass.first + g]);
+      std::memcpy(out_.data() + 2 * g * sizeof(Vec3), &p.force[pass.first + g], sizeof(Vec3));
+      std::memcpy(out_.data() + (2 * g + 1) * sizeof(Vec3), &p.torque[pass.first + g], sizeof(Vec3));
     }
     in_.resize(pass.sent.size() * 2 * sizeof(Vec3));
     ranks_->comm->exchange_sized(out_, pass.from, pass.to, kReverseTag + pass.tag - kCreateTag, in_);

@@ -24,8 +24,10 @@ class HaloExchange {
  public:
   // Appends the copies from the neighbours as ghosts, with their cells: along the axis they
   // came across, the layer past the grid's end on their side.
+  // `oriented`: some bodies turn (shaped ones); spheres keep the orientation they had, so
+  // their copies keep the one they were made with and the forward messages leave it out.
   void create(ParticleStore& particles, const RankGrid& ranks, const CellGrid& grid, double band,
-              std::vector<CellCoord>& cell_of);
+              std::vector<CellCoord>& cell_of, bool oriented = true);
   // Ghosts take their originals' positions, orientations and velocities; their forces are zeroed.
   void forward(ParticleStore& particles) const;
   // The originals receive the forces and torques their ghosts took.
@@ -46,6 +48,7 @@ class HaloExchange {
     std::size_t first = 0, received = 0;
   };
   const RankGrid* ranks_ = nullptr;
+  bool oriented_ = true;
   std::vector<Pass> passes_;
   mutable std::vector<std::byte> out_, in_;  ///< the every-step messages, kept to spare the allocations
 };

@@ -94,12 +94,16 @@ struct Parcel {
 
 MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts& carried,
                        std::vector<WallMemoryRecord>& wall_memories, const MemoryLayout& layout,
-                       std::size_t gid_limit, std::vector<SubContactList>* wall_points) {
+                       std::size_t gid_limit, MigrationScratch& scratch, std::vector<SubContactList>* wall_points) {
   const bool with_points = wall_points != nullptr;  // shaped bodies
-  std::vector<char> owned(gid_limit, 0);
+  std::vector<char>& owned = scratch.owned;
+  owned.assign(gid_limit, 0);
   for (std::size_t i = 0; i < p.owned; ++i) owned[p.gid[i]] = 1;
-  std::vector<CarriedRecord> records;
-  std::vector<SubContactList> record_points;
+  std::vector<CarriedRecord>& records = scratch.records;
+  std::vector<SubContactList>& record_points = scratch.record_points;
+  records.clear();
+  record_points.clear();
+  records.reserve(carried.other.size() + carried.other.size() / 8);
   for (std::uint32_t a = 0; a < gid_limit; ++a)
     for (std::uint32_t k = carried.start[a]; k < carried.start[a + 1]; ++k) {
       records.push_back(carried_record(carried, a, k));
@@ -107,7 +111,8 @@ MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts&
     }
 
   MigrationCount count;
-  std::vector<int> destination(gid_limit, -1);
+  std::vector<int>& destination = scratch.destination;
+  destination.assign(gid_limit, -1);
   int tag = kMigrateTag;
   for (const int axis : ranks.stage_axes()) {
     const SlabDecomposition& slabs = ranks.axes[axis];
@@ -116,7 +121,10 @@ MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts&
     // Parcels to the neighbours below [0] and above [1]; one parcel if they are the same rank.
     Parcel parcel[2];
     const auto parcel_for = [&](int slab) -> Parcel& { return slab == lower ? parcel[0] : parcel[1]; };
-    std::vector<std::uint32_t> order, leaving;
+    std::vector<std::uint32_t>& order = scratch.order;
+    std::vector<std::uint32_t>& leaving = scratch.leaving;
+    order.clear();
+    leaving.clear();
     for (std::size_t i = 0; i < p.owned; ++i) {
       const int owner = slabs.owner_of(p.position[i][axis]);
       if (owner == me) {
@@ -172,16 +180,19 @@ MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts&
 
     // Leavers go (the order keeps the others in place), arrivals are appended.
     const std::size_t stay = order.size();
-    order.insert(order.end(), leaving.begin(), leaving.end());
-    p.permute_owned(order);
+    if (!leaving.empty()) {
+      order.insert(order.end(), leaving.begin(), leaving.end());
+      p.permute_owned(order);
+    }
+    std::size_t arriving = 0;
+    for (const Parcel& in : arrived) arriving += in.particles.size();
     p.owned = stay;
-    p.resize(stay);
+    p.resize(stay + arriving);
+    p.owned = stay + arriving;
+    std::size_t i = stay;
     for (const Parcel& in : arrived) {
       for (const ParticleRow& r : in.particles) {
-        const std::size_t i = p.owned;
-        p.resize(i + 1);
-        p.owned = i + 1;
-        put_row(p, i, r);
+        put_row(p, i++, r);
         owned[r.gid] = 1;
         ++count.arrived;
       }

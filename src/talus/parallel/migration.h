@@ -18,6 +18,17 @@ struct MigrationCount {
   std::size_t left = 0, arrived = 0;
 };
 
+// The working arrays of a migration, kept by the caller from one rebuild to the next: arrays
+// the size of every carried memory, allocated afresh, would map their pages anew at each
+// rebuild (on a virtual machine, half the migration's time).
+struct MigrationScratch {
+  std::vector<char> owned;
+  std::vector<int> destination;
+  std::vector<CarriedRecord> records;
+  std::vector<SubContactList> record_points;
+  std::vector<std::uint32_t> order, leaving;
+};
+
 // Owned particles must be wrapped and ghosts dropped. A particle may move one slab along each
 // axis per rebuild (it moves less than half a skin between rebuilds, and slabs are wider).
 // `wall_memories` (keyed by global id) go with their particles and come with the arrivals.
@@ -26,6 +37,7 @@ struct MigrationCount {
 // points (entry k being record k) and `wall_points` those of the new `wall_memories`.
 MigrationCount migrate(ParticleStore& particles, const RankGrid& ranks, CarriedContacts& carried,
                        std::vector<WallMemoryRecord>& wall_memories, const MemoryLayout& layout,
-                       std::size_t gid_limit, std::vector<SubContactList>* wall_points = nullptr);
+                       std::size_t gid_limit, MigrationScratch& scratch,
+                       std::vector<SubContactList>* wall_points = nullptr);
 
 }  // namespace talus

@@ -33,7 +33,7 @@ std::vector<int> RankGrid::stage_axes() const {
   return order;
 }
 
-bool RankGrid::rebalance(const std::vector<Vec3>& owned_positions, const std::vector<double>& weight, double tolerance) {
+bool RankGrid::rebalance(std::span<const Vec3> owned_positions, const std::vector<double>& weight, double tolerance) {
   bool moved = false;
   std::vector<double> coordinate(owned_positions.size());
   for (int a = 0; a < 3; ++a) {

@@ -10,6 +10,7 @@
 // computed once: by the lower rank along the slab axis, and within one layer of cells along
 // it by the rank owning the particle of lower global id (pair_list.h orders pairs that way).
 #include <array>
+#include <span>
 #include <vector>
 
 #include "talus/math/vec3.h"
@@ -36,7 +37,7 @@ struct RankGrid {
   // Moves each cut axis's cuts towards the quantiles of the particles' weights along it when
   // the heaviest rank holds more than `tolerance` times the mean (collective; `weight` one per
   // owned particle, whole numbers, or empty for counts). Returns whether any moved.
-  bool rebalance(const std::vector<Vec3>& owned_positions, const std::vector<double>& weight, double tolerance = 1.1);
+  bool rebalance(std::span<const Vec3> owned_positions, const std::vector<double>& weight, double tolerance = 1.1);
   // What the cuts balance: particle counts, or the work of each particle's contacts (1 plus
   // the pair and wall entries its rows hold, LAMMPS's "weight neigh").
   enum class Balance { count, neighbours };

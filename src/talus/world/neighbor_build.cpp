@@ -64,7 +64,7 @@ void World::rebuild() {
   const bool points_travel = distributed() && has_composites();
   std::vector<SubContactList> wall_points;
   if (distributed()) {
-    ScopedPhase exchange(timer_, Phase::exchange);
+    ScopedPhase migration(timer_, Phase::migration);
     std::vector<std::uint32_t> wall_entries;
     wall_memories = lists_.walls.carry(lists_.gid_at_build, points_travel, points_travel ? &wall_entries : nullptr);
     if (points_travel) {
@@ -73,9 +73,9 @@ void World::rebuild() {
       wall_points.resize(wall_entries.size());
       for (std::size_t k = 0; k < wall_entries.size(); ++k) wall_points[k] = shaped_.wall_points.list_of(wall_entries[k]);
     }
-    spread_.ranks.rebalance(std::vector<Vec3>(p.position.begin(), p.position.begin() + p.owned), weight);
+    spread_.ranks.rebalance(std::span<const Vec3>(p.position.data(), p.owned), weight);
     spread_.migrated += migrate(p, spread_.ranks, carried, wall_memories, memory_layout(), next_gid_,
-                         points_travel ? &wall_points : nullptr).left;
+                         spread_.migration, points_travel ? &wall_points : nullptr).left;
   }
   const long owned = static_cast<long>(p.owned);
   lists_.grid.setup(distributed() ? sub_domain_grid() : domain, p.position, p.owned, range,
@@ -132,8 +132,8 @@ void World::rebuild() {
   for (long i = 0; i < owned; ++i) cell_of[i] = lists_.grid.coord_of(p.position[i]);
   lists_.ghosts.create(p, image_domain, lists_.grid, range, cell_of);
   if (distributed()) {
-    ScopedPhase exchange(timer_, Phase::exchange);
-    spread_.halo.create(p, spread_.ranks, lists_.grid, range, cell_of);
+    ScopedPhase migration(timer_, Phase::migration);
+    spread_.halo.create(p, spread_.ranks, lists_.grid, range, cell_of, has_composites());
   }
   lists_.grid.bin(cell_of);
 

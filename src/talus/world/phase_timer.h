@@ -5,14 +5,16 @@
 
 namespace talus {
 
-// exchange: halo messages and migration; rebuild_vote: the ranks agreeing whether to rebuild,
-// where a rank ahead of the others waits for them.
-enum class Phase { integrate, neighbors, pair_forces, wall_forces, placement, exchange, rebuild_vote, count };
+// exchange: the halo's every-step messages (ghost states forward, their forces back);
+// migration: what a rebuild sends (the cuts rebalanced, particles and memories handed over, the
+// halo made afresh); rebuild_vote: the ranks agreeing whether to rebuild. Each includes the
+// time a rank ahead of the others waits for them there.
+enum class Phase { integrate, neighbors, pair_forces, wall_forces, placement, exchange, rebuild_vote, migration, count };
 
 // The name each phase has in a run's summary.json.
 inline const char* phase_name(Phase p) {
   constexpr const char* kNames[] = {"integrate",  "neighbours", "pair_forces", "wall_forces",
-                                    "placement", "exchange",   "rebuild_vote"};
+                                    "placement", "exchange",   "rebuild_vote", "migration"};
   return kNames[static_cast<int>(p)];
 }
 

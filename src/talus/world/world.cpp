@@ -16,9 +16,13 @@ namespace {
 // Large arrays come straight from the system (mmap) and go back to it when freed. Left alone,
 // glibc raises its mmap threshold at the first such free, and the arrays that every neighbour
 // rebuild allocates and frees then stay resident in the heap (a third of the peak memory of
-// the 32,000-particle chute).
+// the 32,000-particle chute). Smaller ones come from the heap, whose top is kept up to 32 MiB:
+// a rebuild's scratch arrays of a few hundred kilobytes, freed at the top, would otherwise go
+// back to the system at each rebuild and have their pages mapped again at the next.
 void return_large_arrays_to_system() {
-  static const bool done = [] { return mallopt(M_MMAP_THRESHOLD, 256 * 1024) == 1; }();
+  static const bool done = [] {
+    return mallopt(M_MMAP_THRESHOLD, 256 * 1024) == 1 && mallopt(M_TRIM_THRESHOLD, 32 * 1024 * 1024) == 1;
+  }();
   (void)done;
 }
 }  // namespace
