@@ -159,9 +159,12 @@ crust = 5e-4
 // The named shapes' volumes against their closed forms: a hexapod of three w x w x L rods
 // 3 L w^2 - 2 w^3 (exact: its arms are boxes along the axes); a stellated octahedron in a cube
 // of side 2a, two tetrahedra of 8a^3/3 sharing an octahedron of 4a^3/3, 4 a^3; a rod
-// pi r^2 L + 4/3 pi r^3. All three count their overlaps exactly (mass_properties.h); the
-// tetrapod's crossing cylinders by quadrature, yet it is as stiff to turn about every axis
-// (tetrahedral symmetry) within 1e-3.
+// pi r^2 L + 4/3 pi r^3; a tetrapod, a hub ball of radius R = 5r/4 and four arms of radius r
+// from s = 3r/4 to L, each arm's inner end a cap of height R - s inside the ball:
+// 4/3 pi R^3 + 4 pi r^2 (L - s) - 4/3 pi h^2 (3R - h), with every principal moment
+// 2/3 rho J (tetrahedral symmetry), J = integral of |x|^2: ball 4/5 pi R^5, arm
+// pi r^2 (L^3 - s^3)/3 + pi r^4 (L - s)/2, cap pi/2 (R^4 (R - s) - (R^5 - s^5)/5).
+// All four count their overlaps exactly (mass_properties.h).
 TEST(ScenarioShapes, NamedShapesHaveTheirVolumes) {
   const std::string species = R"([species.hexapod]
 shape = "hexapod"
@@ -193,8 +196,14 @@ radius = 0.002
   EXPECT_NEAR(s["hexapod"]["volume"].get<double>(), 3 * 0.03 * 16e-6 - 2 * 64e-9, 1e-15);
   EXPECT_NEAR(s["star"]["volume"].get<double>() / (4 * 1e-6), 1.0, 1e-12);
   EXPECT_NEAR(s["rod"]["volume"].get<double>() / (pi * 9e-6 * 0.03 + 4.0 / 3.0 * pi * 27e-9), 1.0, 1e-12);
-  const nlohmann::json& moments = s["tetrapod"]["principal_moments"];
-  EXPECT_NEAR(moments[0].get<double>() / moments[2].get<double>(), 1.0, 1e-3);
+  const double r = 0.002, L = 0.015, start = 0.75 * r, R = 1.25 * r, h = R - start;
+  EXPECT_NEAR(s["tetrapod"]["volume"].get<double>() /
+                  (4.0 / 3.0 * pi * R * R * R + 4 * pi * r * r * (L - start) - 4 * pi * h * h * (3 * R - h) / 3),
+              1.0, 1e-12);
+  const double arm_j = pi * r * r * (L * L * L - start * start * start) / 3 + pi * r * r * r * r * (L - start) / 2;
+  const double cap_j = pi / 2 * (std::pow(R, 4) * (R - start) - (std::pow(R, 5) - std::pow(start, 5)) / 5);
+  const double j = 4 * pi * std::pow(R, 5) / 5 + 4 * arm_j - 4 * cap_j;
+  for (const auto& moment : s["tetrapod"]["principal_moments"]) EXPECT_NEAR(moment.get<double>() / (2.0 / 3.0 * 1000 * j), 1.0, 1e-12);
 }
 
 // A regular tetrahedron (edge 2 cm) dropped tilted from 1 cm comes to rest on a face: its centre

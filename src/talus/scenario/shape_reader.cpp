@@ -92,7 +92,7 @@ CompositeShape read_named(const ScenarioFile& f, const std::string& key, const s
   }
   if (shape == "tetrapod") {
     const double arm = f.get<double>(key + ".length", io::positive), radius = f.get<double>(key + ".radius", io::positive);
-    if (radius >= arm) f.fail(key + ".radius", "must be smaller than the arm length");
+    if (!(arm > 1.25 * radius)) f.fail(key + ".radius", "must be below 0.8 of the arm length: the arms reach past the hub of radius 1.25 radius");
     return make_tetrapod(arm, radius, crust_of(f, key, tetrapod_smallest_half(arm, radius)));
   }
   if (shape == "stellated_octahedron") {

@@ -8,8 +8,9 @@
 //     compression into disjoint cells; e.g. the Huet cross, V = 2*27*2*3 - 2*2*3 mm^3);
 //   - else exactly by inclusion-exclusion over the parts that meet, when every common volume
 //     has a closed form (part_intersection.h: any polyhedral parts at any angle, two balls, a
-//     ball capping a cylinder): crosses at any angle, stellated octahedra, rods, mesh unions;
-//   - otherwise (e.g. crossing cylinders, as in a tetrapod) as the exact sum over parts minus a
+//     ball capping a cylinder, parts apart): crosses at any angle, stellated octahedra, rods,
+//     tetrapods, mesh unions;
+//   - otherwise (e.g. two crossing cylinders) as the exact sum over parts minus a
 //     midpoint-rule quadrature of the multiply covered volume on a node grid refined x8 in
 //     boundary cells (only the overlap is approximated; error O(cell size x overlap surface):
 //     measured 2e-5 of the overlap for two spheres, 1e-3 of the overlap = 4e-5 of the total

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 namespace talus {
@@ -33,11 +34,22 @@ CompositeShape make_hexapod(double length, double width, double crust) {
 
 double tetrapod_smallest_half(double arm, double radius) { return std::min(radius, 0.5 * arm); }
 
+// Arms at the tetrahedral angle (cos = -1/3) meet each other within r cot(theta/2) = r/sqrt(2)
+// of the centre; starting at 3r/4 they are apart, and a hub ball through their inner rims
+// (radius sqrt(s^2 + r^2) = 5r/4) closes the centre. The hub meets each arm in a spherical cap
+// and the arms meet nothing else, so the mass properties are exact (part_intersection.h).
+double tetrapod_arm_start(double radius) { return 0.75 * radius; }
+double tetrapod_hub_radius(double radius) { return 1.25 * radius; }
+
 CompositeShape make_tetrapod(double arm, double radius, double crust) {
+  const double start = tetrapod_arm_start(radius);
+  if (!(arm > tetrapod_hub_radius(radius)))
+    throw std::invalid_argument("a tetrapod's arms must reach past its hub: length > 1.25 radius");
   CompositeShape c;
+  c.add(make_sphere(tetrapod_hub_radius(radius)), Pose{});
   for (const Vec3& corner : {Vec3{1, 1, 1}, Vec3{1, -1, -1}, Vec3{-1, 1, -1}, Vec3{-1, -1, 1}}) {
     const Vec3 d = corner / std::sqrt(3.0);
-    c.add(make_cylinder(radius, 0.5 * arm, crust), Pose{0.5 * arm * d, z_onto(d)});
+    c.add(make_cylinder(radius, 0.5 * (arm - start), crust), Pose{0.5 * (arm + start) * d, z_onto(d)});
   }
   return c;
 }

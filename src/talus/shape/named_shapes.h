@@ -13,8 +13,10 @@ namespace talus {
 double hexapod_smallest_half(double width);
 CompositeShape make_hexapod(double length, double width, double crust);
 
-// Four cylindrical arms of radius `radius` (m) from the centre to a regular tetrahedron's
-// corners, `arm` (m) long from the centre to the flat end of each.
+// Four cylindrical arms of radius `radius` (m) towards a regular tetrahedron's corners, `arm`
+// (m) from the centre to the flat end of each, on a hub ball of radius 1.25 radius through the
+// arms' inner rims (the arms start 0.75 radius from the centre, where they no longer meet).
+// arm > 1.25 radius.
 double tetrapod_smallest_half(double arm, double radius);
 CompositeShape make_tetrapod(double arm, double radius, double crust);
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "talus/collide/gjk.h"
+
 namespace talus {
 namespace {
 
@@ -77,17 +79,38 @@ VolumeMoments lens(const Vec3& ca, double ra, const Vec3& cb, double rb) {
   return m;
 }
 
-// A ball capping a cylinder: the same radius, centred on a cap's centre, the cylinder at least
-// as long as the radius. Their common part is the half ball on the cylinder's side.
+// A ball centred on a cylinder's axis at distance s beyond one of its caps (s >= 0), whose
+// surface passes through that cap's rim or inside it (R^2 <= s^2 + r^2): every section of the
+// ball inside the cylinder lies within the cylinder's disc, so their common part is the ball's
+// cap of height R - s on the cylinder's side (a half ball for a ball of the cylinder's radius
+// on the cap's centre, as in a rod), when the cylinder is at least that long.
 std::optional<VolumeMoments> capped_cylinder(const Sphere& s, const Pose& ps, const Cylinder& c, const Pose& pc) {
   const double tolerance = 1e-12 * c.radius;
-  if (std::abs(s.radius - c.radius) > tolerance || 2 * c.half_height < s.radius) return std::nullopt;
   const Vec3 axis = pc.orientation.rotate({0, 0, 1});
   for (const double side : {1.0, -1.0}) {
-    const Vec3 cap = pc.position + axis * (side * c.half_height);
-    if (norm(ps.position - cap) <= tolerance) return spherical_cap_moments(s.radius, s.radius, ps.position, axis * -side);
+    const Vec3 outward = axis * side;
+    const Vec3 cap = pc.position + outward * c.half_height;
+    const Vec3 offset = ps.position - cap;
+    const double beyond = dot(offset, outward);
+    if (beyond < -tolerance || norm(offset - outward * beyond) > tolerance) continue;  // not on the axis past this cap
+    const double height = s.radius - std::max(beyond, 0.0);
+    if (height <= 0) return VolumeMoments{};
+    if (s.radius * s.radius > beyond * beyond + c.radius * c.radius + 2 * tolerance * c.radius || height > 2 * c.half_height)
+      return std::nullopt;
+    return spherical_cap_moments(s.radius, height, ps.position, -1.0 * outward);
   }
   return std::nullopt;
+}
+
+// Two convex parts a positive distance apart (GJK on their sharp geometry) meet in nothing.
+bool parts_apart(const CompositePart& a, const CompositePart& b) {
+  const PosedSupport sa{&a.shape.geometry, a.pose}, sb{&b.shape.geometry, b.pose};
+  GjkOptions options;
+  options.warm_direction = b.pose.position - a.pose.position;
+  options.scale = bounding_radius(a.shape.geometry) + bounding_radius(b.shape.geometry);
+  options.max_iterations = 128;
+  const GjkResult r = gjk_distance(sa, sb, options);
+  return !r.intersecting && r.distance > 1e-9 * options.scale;
 }
 
 bool boxes_apart(const CompositeShape& c, const std::vector<int>& subset) {
@@ -119,6 +142,9 @@ std::optional<VolumeMoments> intersection_moments(const CompositeShape& c, const
     }
     return halfspace_intersection(planes, scale);
   }
+  for (std::size_t i = 0; i < subset.size(); ++i)  // any two apart: nothing in common
+    for (std::size_t j = i + 1; j < subset.size(); ++j)
+      if (parts_apart(c.parts[subset[i]], c.parts[subset[j]])) return VolumeMoments{};
   if (subset.size() != 2) return std::nullopt;
   const CompositePart& a = c.parts[subset[0]];
   const CompositePart& b = c.parts[subset[1]];

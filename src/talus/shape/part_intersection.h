@@ -4,8 +4,9 @@
 //   - any number of polyhedral parts (boxes, polyhedra): their intersection is a convex
 //     polyhedron, the hull of the vertices where three face planes meet inside every part;
 //   - two spheres: a lens, two spherical caps;
-//   - a sphere capping a cylinder (same radius, centred on a cap on the axis, as in a rod):
-//     the half ball inside the cylinder.
+//   - a sphere on a cylinder's axis past one of its caps, through the cap's rim or inside it:
+//     a spherical cap (a half ball for a rod's end; the tetrapod's hub and arms);
+//   - any two parts a positive distance apart (GJK, collide/gjk.h): nothing.
 // Parts whose bounding boxes are apart meet in nothing. Anything else has no closed form here:
 // nullopt, and the caller falls back to quadrature.
 #include <optional>
