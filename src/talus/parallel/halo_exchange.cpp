@@ -11,36 +11,26 @@ namespace {
 // Message tags: the passes of creation, then the forward and the reverse exchange of each pass.
 constexpr int kCreateTag = 100, kForwardTag = 120, kReverseTag = 140;
 
-struct GhostState {
-  Vec3 position, velocity, angular_velocity;
-  Quat orientation;
-};
-
-// The state a ghost takes from its original, shifted across the periodic face; its force is reset.
-GhostState state_of(const ParticleStore& p, std::size_t k, int axis, double shift) {
-  GhostState s{p.position[k], p.velocity[k], p.angular_velocity[k], p.orientation[k]};
-  s.position[axis] += shift;
-  return s;
-}
-
-void set_state(ParticleStore& p, std::size_t k, const GhostState& s) {
-  p.position[k] = s.position;
-  p.velocity[k] = s.velocity;
-  p.angular_velocity[k] = s.angular_velocity;
-  p.orientation[k] = s.orientation;
-  p.force[k] = {};
-  p.torque[k] = {};
-}
-
-// The state of a sphere's copy between rebuilds: its orientation does not change.
+// The state of a copy between rebuilds. A sphere's orientation does not change, so a sphere's
+// copy takes only its motion.
 struct SphereGhostState {
   Vec3 position, velocity, angular_velocity;
 };
 
+struct GhostState {
+  SphereGhostState motion;
+  Quat orientation;
+};
+
+// The state a ghost takes from its original, shifted across the periodic face; its force is reset.
 SphereGhostState sphere_state_of(const ParticleStore& p, std::size_t k, int axis, double shift) {
   SphereGhostState s{p.position[k], p.velocity[k], p.angular_velocity[k]};
   s.position[axis] += shift;
   return s;
+}
+
+GhostState state_of(const ParticleStore& p, std::size_t k, int axis, double shift) {
+  return {sphere_state_of(p, k, axis, shift), p.orientation[k]};
 }
 
 void set_sphere_state(ParticleStore& p, std::size_t k, const SphereGhostState& s) {
@@ -49,6 +39,11 @@ void set_sphere_state(ParticleStore& p, std::size_t k, const SphereGhostState& s
   p.angular_velocity[k] = s.angular_velocity;
   p.force[k] = {};
   p.torque[k] = {};
+}
+
+void set_state(ParticleStore& p, std::size_t k, const GhostState& s) {
+  set_sphere_state(p, k, s.motion);
+  p.orientation[k] = s.orientation;
 }
 
 // One forward pass in the state type T: pack, swap with the neighbours, unpack.
@@ -150,7 +145,7 @@ void HaloExchange::create(ParticleStore& p, const RankGrid& ranks, const CellGri
           p.species[k] = c.species;
           p.shape[k] = c.shape;
           p.gid[k] = c.gid;
-          cell_of[k] = cell_across(grid, s.position, axis, step);
+          cell_of[k] = cell_across(grid, s.motion.position, axis, step);
         }
       }
       passes_.push_back(std::move(pass));
