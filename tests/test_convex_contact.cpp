@@ -12,6 +12,7 @@
 #include "talus/collide/box_box.h"
 #include "talus/collide/convex_contact.h"
 #include "talus/collide/convex_contact_analytic.h"
+#include "talus/collide/gjk_epa.h"
 #include "talus/collide/manifold.h"
 #include "talus/shape/composite_shape.h"
 #include "talus/shape/convex_hull.h"
@@ -189,6 +190,97 @@ TEST(ConvexContact, RandomPolyhedraVsBruteForce) {
                [](auto&... x) { return narrow_phase(x...); }, false);
   random_pairs("poly-box crust", 60, 14, random_polyhedron, [](auto& r) { return random_box(r, false); },
                [](auto&... x) { return narrow_phase(x...); }, false);
+}
+
+// The insertion's yes-or-no test gives narrow_phase's answer to delta_n > -clearance, without
+// EPA, for polyhedra, cylinders, rounded and sharp boxes and spheres, at every distance.
+TEST(ConvexContact, PartsWithinAgreesWithTheNarrowPhase) {
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g;
+  const auto random_part = [&](int kind) {
+    switch (kind) {
+      case 0: return random_polyhedron(rng);
+      case 1: return make_cylinder(0.3 + 0.5 * u(rng), 0.3 + 0.7 * u(rng), 0.05);
+      case 2: return random_box(rng, false);
+      case 3: return random_box(rng, true);
+      default: return make_sphere(0.3 + 0.5 * u(rng));
+    }
+  };
+  int inside = 0, apart = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const ConvexShape a = random_part(trial % 5), b = random_part((trial / 5) % 5);
+    const Pose pa{{u(rng), u(rng), u(rng)}, random_quat(rng)};
+    const double reach = a.bounding_radius + b.bounding_radius;
+    const Pose pb{pa.position + normalized_or_zero({g(rng), g(rng), g(rng)}) * (reach * (0.2 + 0.9 * u(rng))),
+                  random_quat(rng)};
+    const double clearance = 0.01 * reach * u(rng);
+    for (const bool sharp : {false, true}) {
+      const PartContact c = narrow_phase(a, pa, b, pb, nullptr, NarrowPhaseOptions{sharp});
+      // On the edge either answer is right. Between -clearance and 0 the crust method's delta_n
+      // is only a bound (GJK stops once the cores are a crust apart), so it decides nothing.
+      if (c.delta_n > -clearance - 1e-9 * reach && c.delta_n < 1e-9 * reach) continue;
+      const bool expected = c.delta_n > -clearance;
+      ASSERT_EQ(parts_within(a, pa, b, pb, clearance, NarrowPhaseOptions{sharp}), expected)
+          << "trial " << trial << " kinds " << trial % 5 << ", " << (trial / 5) % 5 << " delta_n " << c.delta_n;
+      (expected ? inside : apart) += 1;
+    }
+  }
+  EXPECT_GT(inside, 200);  // both answers are well represented
+  EXPECT_GT(apart, 200);
+}
+
+// A ball against a rounded cylinder in closed form: outside the core the GJK crust method is
+// exact (its core distance) and must agree; inside, the depth is that of the nearer face. The
+// case that broke EPA down (a ball's centre deep in a cylinder core, a tetrapod's hub in an arm)
+// now gets its closed-form depth, and EPA alone gives up (ok = false) instead of multiplying faces.
+TEST(ConvexContact, SphereAgainstCylinderInClosedForm) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g;
+  int outside = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const ConvexShape ball = make_sphere(0.2 + 0.5 * u(rng)), cyl = make_cylinder(0.3 + 0.5 * u(rng), 0.3 + 0.7 * u(rng), 0.05);
+    const Pose pb{{u(rng), u(rng), u(rng)}, random_quat(rng)};
+    const Pose pa{pb.position + normalized_or_zero({g(rng), g(rng), g(rng)}) * (1.6 * u(rng)), Quat{}};
+    const PartContact c = narrow_phase(ball, pa, cyl, pb);
+    ASSERT_EQ(c.method, ContactMethod::kSphereCylinder);
+    const PartContact flipped = narrow_phase(cyl, pb, ball, pa);
+    EXPECT_NEAR(flipped.delta_n, c.delta_n, 1e-15);
+    EXPECT_NEAR(norm(flipped.normal + c.normal), 0, 1e-12);
+    const Cylinder& core = std::get<Cylinder>(cyl.core);
+    const Vec3 q = pb.to_child(pa.position);
+    const double rho = std::hypot(q.x, q.y);
+    if (rho < core.radius && std::abs(q.z) < core.half_height) {  // centre inside the core
+      const double depth = std::min(core.radius - rho, core.half_height - std::abs(q.z));
+      EXPECT_NEAR(c.delta_n, ball.crust + cyl.crust + depth, 1e-12);
+      continue;
+    }
+    const PartContact reference = crust_contact(ball, pa, cyl, pb);
+    if (reference.method != ContactMethod::kCrustGjk || !reference.touching) continue;
+    ++outside;
+    EXPECT_NEAR(c.delta_n, reference.delta_n, 1e-9);
+    EXPECT_NEAR(norm(c.normal - reference.normal), 0, 1e-6);
+    EXPECT_NEAR(norm(c.point_b - reference.point_b), 0, 1e-6);
+  }
+  EXPECT_GT(outside, 50);
+
+  const ConvexShape hub = make_sphere(0.54789632196434424), arm = make_cylinder(0.64279281493331681, 0.83825214329726112, 0.05);
+  const Pose ph{{0.73831085875613001, 0.64079322383093396, 0.63611376880280801},
+                Quat{-0.31857199601630914, 0.2893646898092927, 0.47177355286421596, 0.76955160610814877}};
+  const Pose pc{{0.90530926275071888, 0.78824829369240668, -0.066889941039236511},
+                Quat{0.033081740756416962, -0.95730771111420254, -0.16985172496636855, 0.23155547109874308}};
+  const PosedSupport sh{&hub.core, ph, 0.0}, sc{&arm.core, pc, 0.0};
+  GjkOptions opt;
+  opt.scale = hub.bounding_radius + arm.bounding_radius;
+  const GjkResult r = gjk_distance(sh, sc, opt);
+  ASSERT_TRUE(r.intersecting);
+  const EpaResult e = epa_penetration(sh, sc, r.simplex, opt.scale);
+  EXPECT_LE(e.iterations, 128);
+  const Vec3 q = pc.to_child(ph.position);
+  const double depth = std::min(0.59279281493331681 - std::hypot(q.x, q.y), 0.78825214329726112 - std::abs(q.z));
+  if (e.ok) EXPECT_NEAR(e.depth, depth, 1e-6 * opt.scale);  // EPA, when it answers, is right
+  EXPECT_NEAR(narrow_phase(hub, ph, arm, pc).delta_n, hub.crust + arm.crust + depth, 1e-12);
 }
 
 // Brief (c): degenerate placements, for the crust path and for SAT.

@@ -83,9 +83,33 @@ PartContact narrow_phase(const ConvexShape& a, const Pose& pa, const ConvexShape
   if (ka == ShapeKind::kBox && kb == ShapeKind::kSphere)
     return finish_contact(sphere_box_contact(b.crust, pb.position, std::get<Box>(a.core).half_extents, a.crust, pa),
                           true);
+  if (ka == ShapeKind::kSphere && kb == ShapeKind::kCylinder) {
+    const Cylinder& c = std::get<Cylinder>(b.core);
+    return sphere_cylinder_contact(a.crust, pa.position, c.radius, c.half_height, b.crust, pb);
+  }
+  if (ka == ShapeKind::kCylinder && kb == ShapeKind::kSphere) {
+    const Cylinder& c = std::get<Cylinder>(a.core);
+    return finish_contact(sphere_cylinder_contact(b.crust, pb.position, c.radius, c.half_height, a.crust, pa), true);
+  }
   if (ka == ShapeKind::kBox && kb == ShapeKind::kBox && (options.sharp_boxes || a.crust + b.crust == 0))
     return box_box_contact(std::get<Box>(a.geometry).half_extents, pa, std::get<Box>(b.geometry).half_extents, pb, warm);
   return crust_contact(a, pa, b, pb, warm);
+}
+
+bool parts_within(const ConvexShape& a, const Pose& pa, const ConvexShape& b, const Pose& pb, double clearance,
+                  const NarrowPhaseOptions& options) {
+  const ShapeKind ka = a.kind(), kb = b.kind();
+  const bool crust_method = ka != ShapeKind::kSphere && kb != ShapeKind::kSphere &&
+                            !(ka == ShapeKind::kBox && kb == ShapeKind::kBox && (options.sharp_boxes || a.crust + b.crust == 0));
+  if (!crust_method) return narrow_phase(a, pa, b, pb, nullptr, options).delta_n > -clearance;
+  // The rounded shapes come within the clearance when their cores do within both crusts and it.
+  const PosedSupport ca{&a.core, pa, 0.0}, cb{&b.core, pb, 0.0};
+  GjkOptions opt;
+  opt.margin = a.crust + b.crust + clearance;
+  opt.scale = a.bounding_radius + b.bounding_radius;
+  opt.warm_direction = pa.position - pb.position;
+  const GjkResult r = gjk_distance(ca, cb, opt);
+  return !r.beyond_margin && (r.intersecting || r.distance < opt.margin);
 }
 
 }  // namespace talus

@@ -28,6 +28,7 @@ enum class ContactMethod : std::uint8_t {
   kCrustEpa,      ///< cores intersect: EPA on the cores
   kFallback,      ///< EPA failed: support-function estimate along the centre line
   kPlane,         ///< convex vs half-space
+  kSphereCylinder,  ///< analytic, sphere vs cylinder rounded by its crust
 };
 
 struct PartContact {
@@ -52,6 +53,12 @@ struct NarrowPhaseOptions {
 
 PartContact narrow_phase(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,
                              ContactCache* warm = nullptr, const NarrowPhaseOptions& options = {});
+
+// Whether two parts come within `clearance` of each other: narrow_phase's answer to
+// delta_n > -clearance, where the crust method stops at GJK's verdict instead of measuring
+// the depth by EPA (insertion asks only whether a body fits).
+bool parts_within(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,
+                  double clearance, const NarrowPhaseOptions& options = {});
 
 // The crust method alone (any pair of shapes), for tests and for callers that want one model.
 PartContact crust_contact(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,

@@ -85,6 +85,10 @@ EpaResult epa_penetration(const SupportA& a, const SupportB& b, const Simplex& s
     if (dot(f.n, centre) > f.d) epa_detail::make_face(pts, t[0], t[2], t[1], &f);  // orient outward
     faces.push_back(f);
   }
+  // The origin must lie inside the start: else faces face it from the wrong side, the horizon
+  // stops being one loop and the polytope multiplies its faces without end.
+  for (const Face& f : faces)
+    if (f.d < -eps) return r;
 
   int best = -1;
   for (r.iterations = 1; r.iterations <= max_iterations; ++r.iterations) {
@@ -109,6 +113,12 @@ EpaResult epa_penetration(const SupportA& a, const SupportB& b, const Simplex& s
       }
     }
     if (edges.empty()) break;
+    // A convex polytope's horizon is a loop through fewer vertices than it has; a longer one
+    // (rounding on a flat patch of the difference, as a cylinder's cap) means it broke down.
+    if (edges.size() >= pts.size()) {
+      r.iterations = std::min(r.iterations, max_iterations);
+      return r;
+    }
     for (const auto& [i, j] : edges) {
       Face g;
       if (epa_detail::make_face(pts, i, j, iw, &g)) faces.push_back(g);

@@ -300,32 +300,26 @@ void PairList::split_slabs() {
   chunk_.push_back(static_cast<std::uint32_t>(slab_count));
 }
 
-std::vector<std::int32_t> rows_by_global_id(std::size_t rows, const std::vector<std::uint32_t>& gid,
-                                            std::size_t gid_limit) {
-  std::vector<std::int32_t> row_of(gid_limit, -1);
-  for (std::size_t i = 0; i < rows; ++i) row_of[gid[i]] = static_cast<std::int32_t>(i);
-  return row_of;
-}
-
-void PairList::carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit, bool every_entry,
-                     CarriedContacts& c) const {
+void PairList::carry(const std::vector<std::uint32_t>& gid, bool every_entry, CarriedContacts& c) const {
   // The byte flags kept by the sphere pair loop say the same as the memories (a zero flag
   // means a zero memory) in a twenty-fourth of the bytes. (Shaped bodies carry every entry.)
   const auto keep = [&](std::uint32_t e) { return every_entry || remembered_[e] != 0; };
-  // Counting sort of the kept entries by the global id of their row. Each row has a global id
-  // of its own, so rows count and copy in parallel.
+  // One group per row, keyed by the row's global id (each row has one of its own), so rows
+  // count and copy in parallel.
   const long rows_n = static_cast<long>(rows());
   const bool parallel = worth_parallel(rows());
   c.points.clear();  // the caller adds them, if it needs them
-  c.start.assign(gid_limit + 1, 0);
+  c.key.assign(gid.begin(), gid.begin() + rows_n);
+  c.start.assign(rows() + 1, 0);
 #pragma omp parallel for schedule(static) if (parallel)
   for (long i = 0; i < rows_n; ++i) {
     std::uint32_t kept = 0;
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) kept += keep(e);
-    c.start[gid[i] + 1] = kept;
+    c.start[i + 1] = kept;
   }
-  for (std::size_t a = 0; a < gid_limit; ++a) c.start[a + 1] += c.start[a];
-  const std::size_t kept = c.start[gid_limit];
+  for (std::size_t i = 0; i < rows(); ++i) c.start[i + 1] += c.start[i];
+  c.group_of.index_positions(c.key);
+  const std::size_t kept = c.start[rows()];
   make_room(c.other, kept);
   c.other.resize(kept);
   if (every_entry) {  // the entries of origin (restore_memory), which only shaped bodies ask for
@@ -339,7 +333,7 @@ void PairList::carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limi
   c.memory.resize_for_overwrite(kept, layout);  // every record is written below
 #pragma omp parallel for schedule(static) if (parallel)
   for (long i = 0; i < rows_n; ++i) {
-    std::uint32_t k = c.start[gid[i]];
+    std::uint32_t k = c.start[i];
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) {
       if (!keep(e)) continue;
       c.other[k] = gid[neighbor_[e]];
@@ -355,11 +349,23 @@ CarriedRecord carried_record(const CarriedContacts& c, std::uint32_t a, std::siz
   return {a, c.other[k], at(c.memory.spring), at(c.memory.normal_prev), at(c.memory.rolling)};
 }
 
-void group_records(const std::vector<CarriedRecord>& records, std::size_t gid_limit, const MemoryLayout& layout,
-                   CarriedContacts& c, std::vector<SubContactList>* points) {
-  c.start.assign(gid_limit + 1, 0);
-  for (const CarriedRecord& r : records) ++c.start[r.a + 1];
-  for (std::size_t a = 0; a < gid_limit; ++a) c.start[a + 1] += c.start[a];
+void group_records(const std::vector<CarriedRecord>& records, const MemoryLayout& layout, CarriedContacts& c,
+                   std::vector<SubContactList>* points) {
+  c.key.clear();
+  c.group_of.reset(records.size() / 4);
+  std::vector<std::uint32_t> group(records.size());
+  for (std::size_t n = 0; n < records.size(); ++n) {
+    std::int32_t g = c.group_of.find(records[n].a);
+    if (g == GidIndex::kAbsent) {
+      g = static_cast<std::int32_t>(c.key.size());
+      c.group_of.put(records[n].a, g);
+      c.key.push_back(records[n].a);
+    }
+    group[n] = static_cast<std::uint32_t>(g);
+  }
+  c.start.assign(c.groups() + 1, 0);
+  for (const std::uint32_t g : group) ++c.start[g + 1];
+  for (std::size_t g = 0; g < c.groups(); ++g) c.start[g + 1] += c.start[g];
   c.other.resize(records.size());
   c.entry.clear();
   c.points.clear();
@@ -371,7 +377,7 @@ void group_records(const std::vector<CarriedRecord>& records, std::size_t gid_li
   std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
   for (std::size_t n = 0; n < records.size(); ++n) {
     const CarriedRecord& r = records[n];
-    const std::uint32_t k = fill[r.a]++;
+    const std::uint32_t k = fill[group[n]]++;
     c.other[k] = r.b;
     if (points) {
       c.entry[k] = k;
@@ -384,7 +390,7 @@ void group_records(const std::vector<CarriedRecord>& records, std::size_t gid_li
 }
 
 std::size_t CarriedContacts::bytes() const {
-  return (start.capacity() + other.capacity() + entry.capacity()) * 4 +
+  return (key.capacity() + start.capacity() + other.capacity() + entry.capacity()) * 4 + group_of.bytes() +
          (memory.spring.capacity() + memory.normal_prev.capacity() + memory.rolling.capacity()) * sizeof(Vec3);
 }
 
@@ -399,15 +405,12 @@ void PairList::restore_memory(const CarriedContacts& carried, const std::vector<
   // records of different particles go to different threads without a race. Rows are taken
   // in order, so that the memories are written nearly in order; only a reversed pair (one
   // whose particles changed slab order) looks elsewhere.
-  const std::size_t gid_limit = carried.start.size() - 1;
-  std::vector<std::int32_t> row_of(gid_limit, -1);
   const long rows_n = static_cast<long>(rows());
   const bool parallel = worth_parallel(rows());
-  // Alone: two threads writing at random into one array fight over its cache lines (the
-  // 32,000-sphere chute's took 0.22 ms so, 0.09 ms on one thread).
-  for (long i = 0; i < rows_n; ++i) row_of[gid[i]] = static_cast<std::int32_t>(i);
+  // Alone: two threads writing at random into one table fight over its cache lines.
+  row_of_gid_.index_positions(std::span<const std::uint32_t>(gid.data(), rows()));
   const auto find = [&](std::uint32_t a, std::uint32_t b) -> std::int64_t {  // entry of b in a's row, or -1
-    const std::int32_t i = row_of[a];
+    const std::int32_t i = row_of_gid_.find(a);
     if (i < 0) return -1;
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e)
       if (gid[neighbor_[e]] == b) return e;
@@ -416,7 +419,9 @@ void PairList::restore_memory(const CarriedContacts& carried, const std::vector<
 #pragma omp parallel for schedule(static) if (parallel)
   for (long i = 0; i < rows_n; ++i) {
     const std::uint32_t a = gid[i];
-    for (std::uint32_t k = carried.start[a]; k < carried.start[a + 1]; ++k) {
+    const std::int32_t g = carried.group_of.find(a);
+    if (g < 0) continue;
+    for (std::uint32_t k = carried.start[g]; k < carried.start[g + 1]; ++k) {
       const std::uint32_t b = carried.other[k];
       std::int64_t e = find(a, b);
       const bool reversed = e < 0;
@@ -430,15 +435,15 @@ void PairList::restore_memory(const CarriedContacts& carried, const std::vector<
 }
 
 void PairList::transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
-                               const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
-                               std::vector<std::int64_t>* origin) {
+                               const std::vector<std::uint32_t>& gid, std::vector<std::int64_t>* origin) {
   CarriedContacts carried;
-  old.carry(old_gid, gid_limit, origin != nullptr, carried);
+  old.carry(old_gid, origin != nullptr, carried);
   restore_memory(carried, gid, origin);
 }
 
 std::size_t PairList::bytes() const {
   return row_.capacity() * 4 + neighbor_.capacity() * 4 + remembered_.capacity() + slab_start_.capacity() * 4 +
+         row_of_gid_.bytes() +
          (memory.spring.capacity() + memory.normal_prev.capacity() + memory.rolling.capacity()) * sizeof(Vec3);
 }
 

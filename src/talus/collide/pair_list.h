@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "talus/body/gid_index.h"
 #include "talus/body/particles.h"
 #include "talus/collide/cell_grid.h"
 #include "talus/math/vec3.h"
@@ -36,21 +37,21 @@ struct ContactMemory {
   void copy_from(const ContactMemory& source, std::size_t from, std::size_t to, bool reversed);
 };
 
-// Row (owned index) of each global id in a list built earlier, -1 where absent: how contact
-// memories find their previous entries after particles were sorted again.
-std::vector<std::int32_t> rows_by_global_id(std::size_t rows, const std::vector<std::uint32_t>& gid,
-                                            std::size_t gid_limit);
-
 // The memories of a list's entries keyed by the global ids of their pair, compact (only the
-// entries kept), so that a list can be rebuilt after its old form has been freed.
+// entries kept), so that a list can be rebuilt after its old form has been freed. Records are
+// grouped by their key a, the groups in no particular order, the records of one group in the
+// order they were carried; `group_of` finds a key's group.
 struct CarriedContacts {
-  std::vector<std::uint32_t> start;  ///< per global id a: first record of the pairs (a, b) listed in a's row
+  std::vector<std::uint32_t> key;    ///< global id a of each group
+  std::vector<std::uint32_t> start;  ///< per group: its first record, then the record count
+  GidIndex group_of;                 ///< global id a -> its group
   std::vector<std::uint32_t> other;  ///< global id b of each record
   std::vector<std::uint32_t> entry;  ///< the record's entry in the list it came from
   ContactMemory memory;              ///< the record's memory, as seen from a
   // Shaped bodies between ranks: each record's contact points, seen from a (then `entry` holds
   // each record's own index, the origin of the SubContactStore of the new list).
   std::vector<SubContactList> points;
+  std::size_t groups() const { return key.size(); }
   std::size_t bytes() const;  ///< memory held
 };
 
@@ -64,10 +65,11 @@ struct CarriedRecord {
 // Record k of `carried`, whose key is global id a.
 CarriedRecord carried_record(const CarriedContacts& carried, std::uint32_t a, std::size_t k);
 // `records` grouped by their key a into `carried`, as PairList::carry makes them (no entries of
-// origin). Keys must be below `gid_limit`; memories the layout does not keep are dropped.
-// `points`, if given, are the records' contact points (one list per record), grouped with them.
-void group_records(const std::vector<CarriedRecord>& records, std::size_t gid_limit, const MemoryLayout& layout,
-                   CarriedContacts& carried, std::vector<SubContactList>* points = nullptr);
+// origin): groups in the order their keys first appear, each group's records in their order.
+// Memories the layout does not keep are dropped. `points`, if given, are the records' contact
+// points (one list per record), grouped with them.
+void group_records(const std::vector<CarriedRecord>& records, const MemoryLayout& layout, CarriedContacts& carried,
+                   std::vector<SubContactList>* points = nullptr);
 
 class PairList {
  public:
@@ -79,14 +81,12 @@ class PairList {
   // `origin`, if given, receives per new entry the old entry it continues (+1, negated when
   // the pair's order flipped; 0 for a new pair), for memories kept outside the list.
   void transfer_memory(const PairList& old, const std::vector<std::uint32_t>& old_gid,
-                       const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
-                       std::vector<std::int64_t>* origin = nullptr);
+                       const std::vector<std::uint32_t>& gid, std::vector<std::int64_t>* origin = nullptr);
   // The same in two halves, so that the list can be rebuilt in place: `carry` writes into
   // `carried` (reusing its buffers) the entries that remember a contact (every entry if
   // `every_entry`), keyed by the global ids `gid` of this list's particles; `restore_memory`
   // hands them to this list built anew (`origin` as for transfer_memory).
-  void carry(const std::vector<std::uint32_t>& gid, std::size_t gid_limit, bool every_entry,
-             CarriedContacts& carried) const;
+  void carry(const std::vector<std::uint32_t>& gid, bool every_entry, CarriedContacts& carried) const;
   // Empties the list; its buffers keep their memory for the next build (the memories also
   // their length, which build() resets).
   void clear();
@@ -128,6 +128,7 @@ class PairList {
   std::vector<std::uint32_t> slab_start_;  ///< first owned particle of each slab
   std::vector<std::uint32_t> chunk_;       ///< first slab of each chunk, then the slab count
   std::uint32_t forward_reach_ = 0;
+  GidIndex row_of_gid_;  ///< restore_memory's map, kept between rebuilds
 };
 
 }  // namespace talus

@@ -94,25 +94,25 @@ struct Parcel {
 
 MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts& carried,
                        std::vector<WallMemoryRecord>& wall_memories, const MemoryLayout& layout,
-                       std::size_t gid_limit, MigrationScratch& scratch, std::vector<SubContactList>* wall_points) {
+                       MigrationScratch& scratch, std::vector<SubContactList>* wall_points) {
   const bool with_points = wall_points != nullptr;  // shaped bodies
-  std::vector<char>& owned = scratch.owned;
-  owned.assign(gid_limit, 0);
-  for (std::size_t i = 0; i < p.owned; ++i) owned[p.gid[i]] = 1;
+  GidIndex& owned = scratch.owned;  // 1 for the particles this rank holds now, 0 for those gone
+  owned.reset(p.owned + p.owned / 4);
+  for (std::size_t i = 0; i < p.owned; ++i) owned.put(p.gid[i], 1);
+  const auto holds = [&owned](std::uint32_t gid) { return owned.find(gid) == 1; };
   std::vector<CarriedRecord>& records = scratch.records;
   std::vector<SubContactList>& record_points = scratch.record_points;
   records.clear();
   record_points.clear();
   records.reserve(carried.other.size() + carried.other.size() / 8);
-  for (std::uint32_t a = 0; a < gid_limit; ++a)
-    for (std::uint32_t k = carried.start[a]; k < carried.start[a + 1]; ++k) {
-      records.push_back(carried_record(carried, a, k));
+  for (std::size_t g = 0; g < carried.groups(); ++g)
+    for (std::uint32_t k = carried.start[g]; k < carried.start[g + 1]; ++k) {
+      records.push_back(carried_record(carried, carried.key[g], k));
       if (with_points) record_points.push_back(std::move(carried.points[k]));
     }
 
   MigrationCount count;
-  std::vector<int>& destination = scratch.destination;
-  destination.assign(gid_limit, -1);
+  GidIndex& destination = scratch.destination;  // the slab each leaving particle goes to
   int tag = kMigrateTag;
   for (const int axis : ranks.stage_axes()) {
     const SlabDecomposition& slabs = ranks.axes[axis];
@@ -125,6 +125,7 @@ MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts&
     std::vector<std::uint32_t>& leaving = scratch.leaving;
     order.clear();
     leaving.clear();
+    destination.reset(0);
     for (std::size_t i = 0; i < p.owned; ++i) {
       const int owner = slabs.owner_of(p.position[i][axis]);
       if (owner == me) {
@@ -137,28 +138,28 @@ MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts&
                                  ", past a neighbour, between two rebuilds");
       parcel_for(owner).particles.push_back(row_of(p, i));
       leaving.push_back(static_cast<std::uint32_t>(i));
-      destination[p.gid[i]] = owner;
-      owned[p.gid[i]] = 0;
+      destination.put(p.gid[i], owner);
+      owned.put(p.gid[i], 0);
     }
     std::vector<WallMemoryRecord> staying;
     std::vector<SubContactList> staying_points;
     for (std::size_t n = 0; n < wall_memories.size(); ++n) {
       const WallMemoryRecord& r = wall_memories[n];
-      const bool stays = destination[r.gid] < 0;
-      Parcel* out = stays ? nullptr : &parcel_for(destination[r.gid]);
+      const int to = destination.find(r.gid);
+      const bool stays = to == GidIndex::kAbsent;
+      Parcel* out = stays ? nullptr : &parcel_for(to);
       (stays ? staying : out->wall_records).push_back(r);
       if (wall_points) (stays ? staying_points : out->wall_points).push_back(std::move((*wall_points)[n]));
     }
     wall_memories = std::move(staying);
     if (wall_points) *wall_points = std::move(staying_points);
-    for (const std::uint32_t i : leaving) destination[p.gid[i]] = -1;
 
     // Records of pairs this rank does not hold wholly go to the neighbours, who may list them
     // now or pass them on along the next axis (a pair across a corner); all stay here until
     // the last stage has run.
     for (std::size_t k = 0; k < records.size(); ++k) {
       const CarriedRecord& r = records[k];
-      if (owned[r.a] && owned[r.b]) continue;
+      if (holds(r.a) && holds(r.b)) continue;
       const auto add = [&](Parcel& to) {
         to.records.push_back(r);
         if (with_points) to.record_points.push_back(record_points[k]);
@@ -193,7 +194,7 @@ MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts&
     for (const Parcel& in : arrived) {
       for (const ParticleRow& r : in.particles) {
         put_row(p, i++, r);
-        owned[r.gid] = 1;
+        owned.put(r.gid, 1);
         ++count.arrived;
       }
       records.insert(records.end(), in.records.begin(), in.records.end());
@@ -208,8 +209,8 @@ MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts&
   std::size_t n = 0;
   for (std::size_t k = 0; k < records.size(); ++k) {
     CarriedRecord& r = records[k];
-    if (!owned[r.a]) {
-      if (!owned[r.b]) continue;
+    if (!holds(r.a)) {
+      if (!holds(r.b)) continue;
       r = {r.b, r.a, -1.0 * r.spring, -1.0 * r.normal_prev, -1.0 * r.rolling};
       if (with_points) reverse_points(record_points[k]);
     }
@@ -218,7 +219,7 @@ MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts&
   }
   records.resize(n);
   if (with_points) record_points.resize(n);
-  group_records(records, gid_limit, layout, carried, with_points ? &record_points : nullptr);
+  group_records(records, layout, carried, with_points ? &record_points : nullptr);
   return count;
 }
 

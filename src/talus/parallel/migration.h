@@ -7,6 +7,7 @@
 // (PairList::restore_memory looks a record up in its first particle's row).
 #include <cstddef>
 
+#include "talus/body/gid_index.h"
 #include "talus/body/particles.h"
 #include "talus/collide/pair_list.h"
 #include "talus/parallel/rank_grid.h"
@@ -22,8 +23,7 @@ struct MigrationCount {
 // the size of every carried memory, allocated afresh, would map their pages anew at each
 // rebuild (on a virtual machine, half the migration's time).
 struct MigrationScratch {
-  std::vector<char> owned;
-  std::vector<int> destination;
+  GidIndex owned, destination;
   std::vector<CarriedRecord> records;
   std::vector<SubContactList> record_points;
   std::vector<std::uint32_t> order, leaving;
@@ -37,7 +37,7 @@ struct MigrationScratch {
 // points (entry k being record k) and `wall_points` those of the new `wall_memories`.
 MigrationCount migrate(ParticleStore& particles, const RankGrid& ranks, CarriedContacts& carried,
                        std::vector<WallMemoryRecord>& wall_memories, const MemoryLayout& layout,
-                       std::size_t gid_limit, MigrationScratch& scratch,
+                       MigrationScratch& scratch,
                        std::vector<SubContactList>* wall_points = nullptr);
 
 }  // namespace talus

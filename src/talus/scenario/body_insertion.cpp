@@ -34,7 +34,7 @@ bool bodies_overlap(const PlacedBody& a, const PlacedBody& b, double clearance) 
     for (const auto& [sb, pb] : world_parts(b))
       // Sharp boxes go through separating axes, which answer at the first separating one;
       // their rounded contact shapes lie inside the sharp ones, so no overlap is missed.
-      if (narrow_phase(sa, pa, sb, pb, nullptr, NarrowPhaseOptions{true}).delta_n > -clearance) return true;
+      if (parts_within(sa, pa, sb, pb, clearance, NarrowPhaseOptions{true})) return true;
   return false;
 }
 

@@ -56,7 +56,7 @@ void World::rebuild() {
       weight[i] += lists_.walls.row_end(i) - lists_.walls.row_begin(i);
   }
   CarriedContacts& carried = lists_.carried;
-  lists_.pairs.carry(lists_.gid_at_build, next_gid_, has_composites(), carried);
+  lists_.pairs.carry(lists_.gid_at_build, has_composites(), carried);
   lists_.pairs.clear();
   // A distributed world carries its wall memories by global id too, as particles change rank,
   // and shaped bodies their contact points with them, as plain lists.
@@ -74,8 +74,7 @@ void World::rebuild() {
       for (std::size_t k = 0; k < wall_entries.size(); ++k) wall_points[k] = shaped_.wall_points.list_of(wall_entries[k]);
     }
     spread_.ranks.rebalance(std::span<const Vec3>(p.position.data(), p.owned), weight);
-    spread_.migrated += migrate(p, spread_.ranks, carried, wall_memories, memory_layout(), next_gid_,
-                         spread_.migration, points_travel ? &wall_points : nullptr).left;
+    spread_.migrated += migrate(p, spread_.ranks, carried, wall_memories, memory_layout(), spread_.migration, points_travel ? &wall_points : nullptr).left;
   }
   const long owned = static_cast<long>(p.owned);
   lists_.grid.setup(distributed() ? sub_domain_grid() : domain, p.position, p.owned, range,
@@ -151,9 +150,9 @@ void World::rebuild() {
   lists_.walls = WallContactList{};
   lists_.walls.build(p, walls_, time_, lists_.skin, layout);
   if (distributed())
-    lists_.walls.restore_memory(wall_memories, p.gid, next_gid_, has_composites() ? &origin : nullptr);
+    lists_.walls.restore_memory(wall_memories, p.gid, has_composites() ? &origin : nullptr);
   else
-    lists_.walls.transfer_memory(old_walls, lists_.gid_at_build, p.gid, next_gid_, has_composites() ? &origin : nullptr);
+    lists_.walls.transfer_memory(old_walls, lists_.gid_at_build, p.gid, has_composites() ? &origin : nullptr);
   if (has_composites())
     shaped_.wall_points = points_travel ? SubContactStore::from_lists(lists_.walls, origin, wall_points)
                               : shaped_.wall_points.carried_to(lists_.walls, origin);

@@ -32,13 +32,13 @@ void WallContactList::build(const ParticleStore& p, const std::vector<Wall>& wal
 }
 
 void WallContactList::transfer_memory(const WallContactList& old, const std::vector<std::uint32_t>& old_gid,
-                                      const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
-                                      std::vector<std::int64_t>* origin) {
+                                      const std::vector<std::uint32_t>& gid, std::vector<std::int64_t>* origin) {
   if (origin) origin->assign(entries(), 0);
   if (old.entries() == 0) return;
-  const std::vector<std::int32_t> old_row_of = rows_by_global_id(old.rows(), old_gid, gid_limit);
+  GidIndex old_row_of;
+  old_row_of.index_positions(std::span<const std::uint32_t>(old_gid.data(), old.rows()));
   for (std::size_t i = 0; i < rows(); ++i) {
-    const std::int32_t r = old_row_of[gid[i]];
+    const std::int32_t r = old_row_of.find(gid[i]);
     if (r < 0) continue;
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e)
       for (std::uint32_t f = old.row_begin(r); f < old.row_end(r); ++f) {
@@ -64,14 +64,14 @@ std::vector<WallMemoryRecord> WallContactList::carry(const std::vector<std::uint
 }
 
 void WallContactList::restore_memory(const std::vector<WallMemoryRecord>& records,
-                                     const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
-                                     std::vector<std::int64_t>* origin) {
+                                     const std::vector<std::uint32_t>& gid, std::vector<std::int64_t>* origin) {
   if (origin) origin->assign(entries(), 0);
   if (records.empty()) return;
-  const std::vector<std::int32_t> row_of = rows_by_global_id(rows(), gid, gid_limit);
+  GidIndex row_of;
+  row_of.index_positions(std::span<const std::uint32_t>(gid.data(), rows()));
   for (std::size_t k = 0; k < records.size(); ++k) {
     const WallMemoryRecord& r = records[k];
-    const std::int32_t i = row_of[r.gid];
+    const std::int32_t i = row_of.find(r.gid);
     if (i < 0) continue;
     for (std::uint32_t e = row_[i]; e < row_[i + 1]; ++e) {
       if (wall_[e] != r.wall) continue;

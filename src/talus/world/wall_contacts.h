@@ -24,8 +24,7 @@ class WallContactList {
              const MemoryLayout& layout);
   // `origin`, if given, receives per new entry the old entry it continues (+1; 0 if new).
   void transfer_memory(const WallContactList& old, const std::vector<std::uint32_t>& old_gid,
-                       const std::vector<std::uint32_t>& gid, std::size_t gid_limit,
-                       std::vector<std::int64_t>* origin = nullptr);
+                       const std::vector<std::uint32_t>& gid, std::vector<std::int64_t>* origin = nullptr);
 
   // The memories of the entries in contact (of every entry if `every_entry`: shaped bodies keep
   // theirs outside the list), keyed by global id (`gid` of this list's rows); `entries`, if
@@ -35,7 +34,7 @@ class WallContactList {
   // Hands `records` to the entries of this list built anew; records without an entry are dropped.
   // `origin`, if given, receives per entry the record it took (+1; 0 if none).
   void restore_memory(const std::vector<WallMemoryRecord>& records, const std::vector<std::uint32_t>& gid,
-                      std::size_t gid_limit, std::vector<std::int64_t>* origin = nullptr);
+                      std::vector<std::int64_t>* origin = nullptr);
 
   std::uint32_t row_begin(std::size_t i) const { return row_[i]; }
   std::uint32_t row_end(std::size_t i) const { return row_[i + 1]; }

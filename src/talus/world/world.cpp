@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -32,6 +33,8 @@ World::World(const WorldSettings& settings) : settings_(settings) { return_large
 std::uint32_t World::add_particle(const ParticleInit& init) {
   if (!(init.radius > 0)) throw std::invalid_argument("particle radius must be positive");
   if (!(init.mass > 0)) throw std::invalid_argument("particle mass must be positive");
+  if (next_gid_ == std::numeric_limits<std::uint32_t>::max())  // the id GidIndex keeps for empty slots
+    throw std::length_error("more than 2^32 - 1 particles added to one run");
   particles_.drop_ghosts();
   const std::size_t n = particles_.owned;
   particles_.resize(n + 1);

@@ -327,7 +327,7 @@ void World::restore_by_global_ids(const WorldState& s) {
           "contact points of the rigid bodies missing");
   std::vector<SubContactList> pair_points = shaped ? s.pair_sub : std::vector<SubContactList>{};
   CarriedContacts carried;
-  group_records(records, next_gid_, layout, carried, shaped ? &pair_points : nullptr);
+  group_records(records, layout, carried, shaped ? &pair_points : nullptr);
   std::vector<std::int64_t> origin;
   lists_.pairs.restore_memory(carried, particles_.gid, shaped ? &origin : nullptr);
   if (shaped) shaped_.pair_points = SubContactStore::from_lists(lists_.pairs, origin, carried.points);
@@ -337,7 +337,7 @@ void World::restore_by_global_ids(const WorldState& s) {
   for (std::size_t e = 0; e < s.wall_gid.size(); ++e)
     walls.push_back({s.wall_gid[e], s.wall_index[e], at(s.wall_memory.spring, e), at(s.wall_memory.normal_prev, e),
                      at(s.wall_memory.rolling, e)});
-  lists_.walls.restore_memory(walls, particles_.gid, next_gid_, shaped ? &origin : nullptr);
+  lists_.walls.restore_memory(walls, particles_.gid, shaped ? &origin : nullptr);
   if (shaped) shaped_.wall_points = SubContactStore::from_lists(lists_.walls, origin, s.wall_sub);
   ready_ = true;
 }
