@@ -115,10 +115,7 @@ EpaResult epa_penetration(const SupportA& a, const SupportB& b, const Simplex& s
     if (edges.empty()) break;
     // A convex polytope's horizon is a loop through fewer vertices than it has; a longer one
     // (rounding on a flat patch of the difference, as a cylinder's cap) means it broke down.
-    if (edges.size() >= pts.size()) {
-      r.iterations = std::min(r.iterations, max_iterations);
-      return r;
-    }
+    if (edges.size() >= pts.size()) return r;
     for (const auto& [i, j] : edges) {
       Face g;
       if (epa_detail::make_face(pts, i, j, iw, &g)) faces.push_back(g);

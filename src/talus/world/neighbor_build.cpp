@@ -74,7 +74,8 @@ void World::rebuild() {
       for (std::size_t k = 0; k < wall_entries.size(); ++k) wall_points[k] = shaped_.wall_points.list_of(wall_entries[k]);
     }
     spread_.ranks.rebalance(std::span<const Vec3>(p.position.data(), p.owned), weight);
-    spread_.migrated += migrate(p, spread_.ranks, carried, wall_memories, memory_layout(), spread_.migration, points_travel ? &wall_points : nullptr).left;
+    spread_.migrated += migrate(p, spread_.ranks, carried, wall_memories, memory_layout(), spread_.migration,
+                                points_travel ? &wall_points : nullptr).left;
   }
   const long owned = static_cast<long>(p.owned);
   lists_.grid.setup(distributed() ? sub_domain_grid() : domain, p.position, p.owned, range,
