@@ -99,7 +99,7 @@ int run_file(io::ScenarioFile& file, const std::string& label, std::string out, 
   options.threads = threads;
   options.checkpoint_interval = run_start.checkpoint_interval;
   install_stop_handlers();
-  const RunOutcome outcome = run_scenario(scenario, options);
+  const RunOutcome outcome = run_scenario(scenario, std::move(options));
   if (outcome.stop_reason == "blow_up") {  // said even with --quiet: the run failed
     std::fprintf(stderr, "talus: error: %s; state in %s\n", outcome.error.c_str(), outcome.state_file.c_str());
     return kBlowUpStatus;
@@ -121,8 +121,9 @@ int command_resume(const std::string& dir, bool quiet, int threads, std::optiona
   const std::filesystem::path latest = CheckpointSeries::latest(dir);
   if (!std::filesystem::exists(latest))
     throw io::InputError(dir + ": no checkpoint to resume from (" + latest.string() + " is missing)");
-  const io::Checkpoint checkpoint = io::read_checkpoint(latest);
-  io::ScenarioFile file = io::ScenarioFile::from_string(checkpoint.scenario_toml, latest.string() + ":/scenario");
+  // Only its scenario here: run_file reads the state, and lets it go once restored.
+  io::ScenarioFile file =
+      io::ScenarioFile::from_string(io::read_checkpoint_scenario(latest), latest.string() + ":/scenario");
   return run_file(file, (std::filesystem::path(dir) / "scenario.toml").string(), dir, true, quiet, threads,
                   {latest.string(), checkpoint_interval});
 }

@@ -135,5 +135,25 @@ TEST(CheckpointProcess, TerminatedRunResumesToTheSameEnd) {
   fs::remove_all(dir);
 }
 
+// A restart may write into a new folder; its VTK series starts there, with no earlier frames.
+TEST(CheckpointProcess, RestartIntoANewFolderWritesItsVtkSeries) {
+  const fs::path dir = testing::test_folder();
+  std::string toml = with_end_time(testing::kSettlingBox, "0.04");
+  toml.insert(toml.find("[domain]"), "checkpoint_interval = 0.02\nvtk_interval = 0.01\n");
+  std::ofstream(dir / "case.toml") << toml;
+  ASSERT_EQ(wait_for(spawn_talus({"run", (dir / "case.toml").string(), "--out", (dir / "first").string(), "--quiet"})), 0);
+  const fs::path checkpoint = CheckpointSeries::latest(dir / "first");
+
+  std::string longer = with_end_time(toml, "0.06");
+  std::ofstream(dir / "longer.toml") << longer;
+  ASSERT_EQ(wait_for(spawn_talus({"run", (dir / "longer.toml").string(), "--restart", checkpoint.string(), "--out",
+                                  (dir / "second").string(), "--quiet"})),
+            0);
+  const std::string pvd = slurp(dir / "second" / "vtk" / "particles.pvd");
+  EXPECT_NE(pvd.find("<DataSet"), std::string::npos) << pvd;
+  EXPECT_TRUE(fs::exists(dir / "second" / "summary.json"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace talus

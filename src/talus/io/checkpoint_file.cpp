@@ -302,29 +302,32 @@ std::vector<char> checkpoint_image(const Checkpoint& c) {
 }
 
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
+  if (!c.world.whole) throw std::logic_error("one rank's piece of a distributed state is not a checkpoint");
   const std::vector<char> bytes = checkpoint_image(c);
   atomic_write(path, std::string_view(bytes.data(), bytes.size()));
 }
 
-Checkpoint read_checkpoint(const std::filesystem::path& path) {
+namespace {
+
+// The talus version that wrote the file; InputError unless it is a checkpoint of this format.
+std::string checked_writer(const Hdf5Reader& h5, const std::filesystem::path& path) {
+  if (!h5.has_attribute("format") || h5.string_attribute("format") != kFormat)
+    throw InputError(path.string() + ": not a Talus checkpoint (no format = \"" + kFormat + "\" attribute)");
+  const std::int64_t version = h5.int_attribute("format_version");
+  const std::string written_by = h5.has_attribute("talus_version") ? h5.string_attribute("talus_version") : "?";
+  if (version != kCheckpointFormatVersion)
+    throw InputError(path.string() + ": checkpoint format version " + std::to_string(version) + " (written by talus " +
+                     written_by + "); this talus (" + TALUS_VERSION + ") reads version " +
+                     std::to_string(kCheckpointFormatVersion));
+  return written_by;
+}
+
+// read(h5) on the opened checkpoint, every failure an InputError that names the file.
+template <class Read>
+auto read_from(const std::filesystem::path& path, Read read) {
   try {
     Hdf5Reader h5(path);
-    if (!h5.has_attribute("format") || h5.string_attribute("format") != kFormat)
-      throw InputError(path.string() + ": not a Talus checkpoint (no format = \"" + kFormat + "\" attribute)");
-    const std::int64_t version = h5.int_attribute("format_version");
-    const std::string written_by = h5.has_attribute("talus_version") ? h5.string_attribute("talus_version") : "?";
-    if (version != kCheckpointFormatVersion)
-      throw InputError(path.string() + ": checkpoint format version " + std::to_string(version) + " (written by talus " +
-                       written_by + "); this talus (" + TALUS_VERSION + ") reads version " +
-                       std::to_string(kCheckpointFormatVersion));
-    Checkpoint c;
-    c.talus_version = written_by;
-    c.scenario_toml = h5.read_text("scenario");
-    c.run = nlohmann::json::parse(h5.read_text("run"));
-    c.timeseries_columns = nlohmann::json::parse(h5.read_text("timeseries_columns")).get<std::vector<std::string>>();
-    c.timeseries = h5.read_double("timeseries", std::max<std::size_t>(1, c.timeseries_columns.size()));
-    c.world = read_world(h5);
-    return c;
+    return read(h5);
   } catch (const InputError&) {
     throw;
   } catch (const nlohmann::json::exception& e) {
@@ -334,6 +337,28 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     const std::string what = e.what();
     throw InputError(what.rfind(path.string(), 0) == 0 ? what : path.string() + ": " + what);
   }
+}
+
+}  // namespace
+
+Checkpoint read_checkpoint(const std::filesystem::path& path) {
+  return read_from(path, [&path](const Hdf5Reader& h5) {
+    Checkpoint c;
+    c.talus_version = checked_writer(h5, path);
+    c.scenario_toml = h5.read_text("scenario");
+    c.run = nlohmann::json::parse(h5.read_text("run"));
+    c.timeseries_columns = nlohmann::json::parse(h5.read_text("timeseries_columns")).get<std::vector<std::string>>();
+    c.timeseries = h5.read_double("timeseries", std::max<std::size_t>(1, c.timeseries_columns.size()));
+    c.world = read_world(h5);
+    return c;
+  });
+}
+
+std::string read_checkpoint_scenario(const std::filesystem::path& path) {
+  return read_from(path, [&path](const Hdf5Reader& h5) {
+    checked_writer(h5, path);
+    return h5.read_text("scenario");
+  });
 }
 
 }  // namespace talus::io

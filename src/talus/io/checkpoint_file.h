@@ -49,5 +49,7 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& check
 // Throws io::InputError "PATH: what is wrong" for a missing, corrupt or foreign file, or one of
 // another format version.
 Checkpoint read_checkpoint(const std::filesystem::path& path);
+// Only the scenario text stored in it (what `talus resume` needs before the run reads the state).
+std::string read_checkpoint_scenario(const std::filesystem::path& path);
 
 }  // namespace talus::io

@@ -47,6 +47,8 @@ void VtkOutput::resume(const std::vector<double>& times) {
           entries.push_back({times[k], frame_file(stem, k, extension).string()});
     return entries;
   };
+  // A restart may write into a new results folder, with no earlier frames in it.
+  std::filesystem::create_directories(directory_);
   particles_.add_all(earlier("particles"));
   if (shapes_series_) shapes_series_->add_all(earlier("shapes"));
   contacts_.add_all(earlier("contacts"));

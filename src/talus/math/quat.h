@@ -16,6 +16,27 @@ struct Quat {
     return {std::cos(0.5 * angle), u.x * s, u.y * s, u.z * s};
   }
 
+  // The rotation taking the x, y and z axes to ex, ey and ez (orthonormal, right-handed): the
+  // rotation matrix [ex ey ez] read by Shepperd's method, from its largest diagonal term.
+  static Quat from_frame(const Vec3& ex, const Vec3& ey, const Vec3& ez) {
+    const double trace = ex.x + ey.y + ez.z;
+    Quat q;
+    if (trace >= ex.x && trace >= ey.y && trace >= ez.z) {
+      const double s = 2 * std::sqrt(1 + trace);
+      q = {0.25 * s, (ey.z - ez.y) / s, (ez.x - ex.z) / s, (ex.y - ey.x) / s};
+    } else if (ex.x >= ey.y && ex.x >= ez.z) {
+      const double s = 2 * std::sqrt(1 + ex.x - ey.y - ez.z);
+      q = {(ey.z - ez.y) / s, 0.25 * s, (ey.x + ex.y) / s, (ez.x + ex.z) / s};
+    } else if (ey.y >= ez.z) {
+      const double s = 2 * std::sqrt(1 - ex.x + ey.y - ez.z);
+      q = {(ez.x - ex.z) / s, (ey.x + ex.y) / s, 0.25 * s, (ez.y + ey.z) / s};
+    } else {
+      const double s = 2 * std::sqrt(1 - ex.x - ey.y + ez.z);
+      q = {(ex.y - ey.x) / s, (ez.x + ex.z) / s, (ez.y + ey.z) / s, 0.25 * s};
+    }
+    return q.normalized();
+  }
+
   constexpr Vec3 vec() const { return {x, y, z}; }
   constexpr Quat conjugate() const { return {w, -x, -y, -z}; }
   constexpr bool operator==(const Quat&) const = default;

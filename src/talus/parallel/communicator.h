@@ -38,6 +38,9 @@ class Communicator {
   void exchange_sized(const std::vector<std::byte>& out, int to, int from, int tag, std::vector<std::byte>& in) const;
   // Every rank's bytes, concatenated in rank order, on every rank.
   std::vector<std::byte> all_gather(const std::vector<std::byte>& mine) const;
+  // The same on rank `root` only (the others get nothing back): what one writer needs, without
+  // a copy of everything on every rank.
+  std::vector<std::byte> gather(const std::vector<std::byte>& mine, int root) const;
 
  private:
   Communicator(int rank, int size, bool mpi) : rank_(rank), size_(size), mpi_(mpi) {}

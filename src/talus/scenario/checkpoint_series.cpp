@@ -76,4 +76,9 @@ void CheckpointSeries::write(const io::Checkpoint& checkpoint) {
   ++written_;
 }
 
+void CheckpointSeries::count_written_elsewhere(std::uint64_t step) {
+  last_step_ = step;
+  ++written_;
+}
+
 }  // namespace talus

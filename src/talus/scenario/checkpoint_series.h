@@ -20,6 +20,9 @@ class CheckpointSeries {
 
   // Writes checkpoint_<step>.h5, points latest.h5 at it, drops the oldest beyond `keep`.
   void write(const io::Checkpoint& checkpoint);
+  // A checkpoint of the same run that another rank writes: counted as written here, so every
+  // rank of a distributed run decides alike when the last one is due.
+  void count_written_elsewhere(std::uint64_t step);
 
   const std::filesystem::path& directory() const { return dir_; }
   std::size_t written() const { return written_; }

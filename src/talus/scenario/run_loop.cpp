@@ -77,7 +77,7 @@ void install_stop_handlers() {
   std::signal(SIGTERM, request_stop);
 }
 
-RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
+RunOutcome run_scenario(Scenario& sc, RunOptions options) {
   // Under mpirun the run is spread over the ranks (World::distribute); every rank runs the loop,
   // and its outputs, which read the whole system, are the same on every rank. Rank 0 writes
   // them to the results folder, the others to a scratch folder removed at the end. Snapshot
@@ -85,7 +85,8 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   // pieces, one per rank.
   const Communicator& comm = Communicator::world();
   const bool spread = comm.size() > 1;
-  RunOptions opt = options;
+  const std::filesystem::path results = options.out;  // rank 0's folder, where every rank writes VTK pieces
+  RunOptions opt = std::move(options);
   std::optional<ScratchFolder> scratch;
   if (spread && comm.rank() > 0) {
     scratch.emplace(opt.out, comm.rank());
@@ -132,7 +133,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   };
   // Every rank writes its pieces into the results folder (created by rank 0 before the
   // collective distribute() that precedes the first piece).
-  if (run.vtk_interval > 0) vtk.emplace(options.out / "vtk", world.shapes());
+  if (run.vtk_interval > 0) vtk.emplace(results / "vtk", world.shapes());
   // Snapshot files for analyses of saved output (`talus coarse-grain`, `talus analyze`).
   auto snapshot_due = [&] {
     if (run.snapshot_interval <= 0 || world.time() < loop.next_snapshot - 0.5 * world.settings().time_step) return;
@@ -149,11 +150,17 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
   auto write_checkpoint = [&] {
     const auto t0 = std::chrono::steady_clock::now();
     loop.particles_left_domain = guard.removed();
-    checkpoints.write(capture_checkpoint(sc, loop, opt.scenario_toml, columns));
+    const io::Checkpoint checkpoint = capture_checkpoint(sc, loop, opt.scenario_toml, columns);
+    if (checkpoint.world.whole)
+      checkpoints.write(checkpoint);
+    else
+      checkpoints.count_written_elsewhere(checkpoint.world.steps);  // rank 0 writes it
     checkpoint_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
-  if (opt.restart) {
+  const bool restarted = opt.restart != nullptr;
+  if (restarted) {
     loop = restore_checkpoint(sc, *opt.restart, opt.restart_source, columns, spread ? &comm : nullptr);
+    opt.restart.reset();
     guard.set_removed(loop.particles_left_domain);
     for (std::size_t r = 0; r + columns.size() <= loop.rows.size(); r += columns.size())
       csv.row(std::span<const double>(loop.rows.data() + r, columns.size()));
@@ -247,7 +254,7 @@ RunOutcome run_scenario(Scenario& sc, const RunOptions& options) {
                             {"latest", CheckpointSeries::latest(opt.out).string()},
                             {"last_bytes", checkpoints.last_bytes()},
                             {"wall_time", checkpoint_seconds}};
-  if (opt.restart) summary["restarted_from"] = {{"checkpoint", opt.restart_source}, {"step", first_step}};
+  if (restarted) summary["restarted_from"] = {{"checkpoint", opt.restart_source}, {"step", first_step}};
   summary["particles_left_domain"] = guard.removed();
   if (blow_up) {
     // No study measures a broken state; the record says what broke, and no NaN or infinity of

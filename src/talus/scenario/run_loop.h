@@ -32,7 +32,9 @@ struct RunOutcome {
   std::filesystem::path state_file;    ///< "blow_up": the state's snapshot file in the results folder
 };
 
-RunOutcome run_scenario(Scenario& scenario, const RunOptions& options);
+// The restart checkpoint is let go once restored: options passed by move free its memory (the
+// whole state) for the rest of the run.
+RunOutcome run_scenario(Scenario& scenario, RunOptions options);
 
 // Set by SIGINT/SIGTERM: the run stops at the end of the current step and writes its results
 // and a final checkpoint.

@@ -113,6 +113,33 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
   return 1;
 }
 
+// Whether a part centred at `centre` and held in a ball of `reach` may touch an edge of the
+// bounded wall: its ball's shadow on the wall's plane is not inside the rectangle.
+bool reaches_an_edge(const Wall& wall, const Vec3& origin, const Vec3& centre, double reach) {
+  const Vec3 q = centre - origin;
+  return std::abs(dot(q, wall.axis_u)) + reach > wall.half_extent_u ||
+         std::abs(dot(q, wall.axis_v)) + reach > wall.half_extent_v;
+}
+
+// Contact points of a part with a bounded wall near the wall's edges. The wall is a plate there,
+// a sharp box behind its face as thick as the part is wide: a part reaching round an edge is
+// pushed off the edge, its depth growing from zero as it comes over the face, where the
+// plane's contact sets it in once and whole (the energy this gave a tetrapod sliding off a
+// hopper's wall threw it out of the domain). Behind a face no thinner than the part, the
+// shortest way out of the box is through that face or a side, never through the back.
+int plate_points(const ConvexShape& part, const Pose& pose, const Wall& wall, const Vec3& origin, bool manifold,
+                 PointGeometry out[4]) {
+  const double thickness = 2 * part.bounding_radius;
+  thread_local ConvexShape plate;
+  plate = make_box({wall.half_extent_u, wall.half_extent_v, 0.5 * thickness});
+  const Pose plate_pose{origin - 0.5 * thickness * wall.normal, Quat::from_frame(wall.axis_u, wall.axis_v, wall.normal)};
+  if (manifold) return touching_points(contact_manifold(part, pose, plate, plate_pose), out);
+  const PartContact c = narrow_phase(part, pose, plate, plate_pose);
+  if (!c.touching || !(c.delta_n > 0)) return 0;
+  out[0] = {c.normal, c.point, c.delta_n, 0};
+  return 1;
+}
+
 // Finds the memory of a contact point in last step's list.
 const SubContact* find_previous(std::span<const SubContact> previous, const SubContact& key) {
   for (const SubContact& s : previous)
@@ -355,7 +382,9 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
     const Pose pa = part_pose(placed[a], si.parts[a], p.orientation[i]);
     UninitializedArray<PointGeometry, 4> points;
     int n = 0;
-    if (settings_.contact_manifold) {
+    if (wall.bounded && reaches_an_edge(wall, origin, placed[a].box.centre, si.parts[a].shape.bounding_radius)) {
+      n = plate_points(si.parts[a].shape, pa, wall, origin, settings_.contact_manifold, points.data());
+    } else if (settings_.contact_manifold) {
       n = touching_points(
           convex_plane_manifold(si.parts[a].shape, pa, plane, placed[a].is_box ? &placed[a].box : nullptr),
           points.data());
@@ -364,7 +393,6 @@ ContactResult World::composite_wall(std::size_t i, const Wall& wall, const Vec3&
       if (c.touching && c.delta_n > 0) points[n++] = {c.normal, c.point, c.delta_n, 0};
     }
     for (int k = 0; k < n; ++k) {
-      if (wall.bounded && !wall_faces(wall, origin, points[k].point, 0.0)) continue;
       UninitializedArray<SubContact, 1> slot;  // every field set once, as in composite_pair
       SubContact& s = slot[0];
       s.part_i = static_cast<std::uint16_t>(a);

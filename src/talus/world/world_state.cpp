@@ -73,7 +73,8 @@ void take_lists(ByteReader& r, std::vector<SubContactList>& lists) {
   for (auto n = r.get<std::uint64_t>(); n > 0; --n) take(r, lists.emplace_back());
 }
 
-// The pieces of every rank joined, rank after rank, on every rank.
+// The pieces of every rank joined, rank after rank, on rank 0; the other ranks keep their own
+// piece (WorldState::whole).
 void join_pieces(WorldState& s, const Communicator& comm) {
   std::vector<std::byte> mine;
   StatePacker out{ByteWriter(mine)};
@@ -86,7 +87,12 @@ void join_pieces(WorldState& s, const Communicator& comm) {
   out.put(s.wall_gid), out.put(s.wall_index), out.put(s.wall_entry_force);
   out.put(s.wall_memory.spring), out.put(s.wall_memory.normal_prev), out.put(s.wall_memory.rolling);
   put_lists(out, s.pair_sub), put_lists(out, s.wall_sub);
-  const std::vector<std::byte> all = comm.all_gather(mine);
+  const std::vector<std::byte> all = comm.gather(mine, 0);
+  s.ranks = static_cast<std::uint64_t>(comm.size());
+  if (comm.rank() != 0) {
+    s.whole = false;
+    return;
+  }
   WorldState j;
   ParticleStore& q = j.particles;
   ByteReader in(all);
@@ -120,7 +126,6 @@ void join_pieces(WorldState& s, const Communicator& comm) {
   s.wall_memory = std::move(j.wall_memory);
   s.pair_sub = std::move(j.pair_sub);
   s.wall_sub = std::move(j.wall_sub);
-  s.ranks = static_cast<std::uint64_t>(comm.size());
 }
 
 }  // namespace

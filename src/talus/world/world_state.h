@@ -40,6 +40,9 @@ struct WorldState {
     std::vector<std::uint64_t> particles, pair_entries, wall_entries;
   };
   RankLayout layout;  ///< no cuts for one rank and in files that predate it
+  // False on the ranks other than 0 of a distributed world: rank 0 gathers the pieces and
+  // writes the checkpoint, so the others keep only their own piece, never a copy of the whole.
+  bool whole = true;
   bool fits_ranks(std::uint64_t n) const;  ///< gathered from n > 1 ranks, with their layout
   std::uint32_t next_gid = 0;
   double time = 0;                  ///< s
