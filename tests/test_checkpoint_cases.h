@@ -133,7 +133,7 @@ inline std::filesystem::path test_folder(const std::string& suffix = "") {
 // Runs `toml` into `out` in this process, optionally from a checkpoint.
 // `setup` may add observers to the loaded scenario.
 inline RunOutcome run_case(const std::string& toml, const std::filesystem::path& out, double checkpoint_interval,
-                           std::shared_ptr<const io::Checkpoint> restart = nullptr,
+                           std::shared_ptr<io::Checkpoint> restart = nullptr,
                            const std::string& restart_source = "",
                            const std::function<void(Scenario&)>& setup = {}) {
   io::ScenarioFile file = io::ScenarioFile::from_string(toml, "case.toml");

@@ -128,9 +128,23 @@ def run_folders(family_dir: Path):
 
 def run_chute_study(study, args, runs):
     out = study.folder(runs)
+    restore_kept_chute(study, out)
     run_study_command(args, study.command, str(ROOT / "examples" / "chute.toml"), *study.options, "--jobs", str(args.jobs),
           "--out", str(out))
     compact_chute(study, out)
+
+
+def restore_kept_chute(study, out: Path):
+    """Puts the cases kept under validation/ back into a runs folder that lacks them (a fresh
+    checkout): the study reuses a case by its summary.json, so they are not run again."""
+    for case in sorted(study.folder(VALIDATION).glob("lambda*_H*_theta*")):
+        target = out / case.name
+        if not finished(case) or (target / "summary.json").exists():
+            continue
+        target.mkdir(parents=True, exist_ok=True)
+        for name in CHUTE_CASE_FILES:
+            if (case / name).exists():
+                shutil.copyfile(case / name, target / name)
 
 
 def compact_chute(study, out: Path):

@@ -30,7 +30,7 @@ io::Checkpoint capture_checkpoint(Scenario& sc, const LoopState& loop, const std
   return c;
 }
 
-LoopState restore_checkpoint(Scenario& sc, const io::Checkpoint& c, const std::string& source,
+LoopState restore_checkpoint(Scenario& sc, io::Checkpoint c, const std::string& source,
                              const std::vector<std::string>& columns, const Communicator* ranks) {
   auto fail = [&](const std::string& what) -> void {
     throw io::InputError(source + ": " + what);
@@ -50,7 +50,7 @@ LoopState restore_checkpoint(Scenario& sc, const io::Checkpoint& c, const std::s
         fail("checkpoint has observer \"" + observers[k].at("name").get<std::string>() + "\" where the scenario has \"" +
              sc.observers[k]->name() + "\"");
 
-    sc.world->restore_state(c.world, ranks);
+    sc.world->restore_state(std::move(c.world), ranks);
     for (std::size_t k = 0; k < pours.size(); ++k) sc.pours[k].restore(pours[k]);
     for (std::size_t k = 0; k < observers.size(); ++k) sc.observers[k]->restore(observers[k].at("state"));
 
@@ -61,7 +61,7 @@ LoopState restore_checkpoint(Scenario& sc, const io::Checkpoint& c, const std::s
     loop.vtk_times = c.run.at("vtk_times").get<std::vector<double>>();
     loop.next_snapshot = c.run.value("next_snapshot", 0.0);
     loop.snapshots = c.run.value("snapshots", std::size_t{0});
-    loop.rows = c.timeseries;
+    loop.rows = std::move(c.timeseries);
     loop.particles_left_domain = c.run.value("particles_left_domain", std::uint64_t{0});  // absent before the guard
     return loop;
   } catch (const io::InputError&) {

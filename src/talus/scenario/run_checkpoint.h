@@ -32,8 +32,9 @@ io::Checkpoint capture_checkpoint(Scenario& scenario, const LoopState& loop, con
 // loop's. Throws io::InputError "SOURCE: what does not fit" when the checkpoint was written for
 // another scenario (other walls, pours, observers, species or time-series columns). `ranks`: the
 // ranks the run goes on over (World::restore_state): a checkpoint written on as many goes on
-// spread as it was, bit for bit.
-LoopState restore_checkpoint(Scenario& scenario, const io::Checkpoint& checkpoint, const std::string& source,
+// spread as it was, bit for bit. The checkpoint is taken by value so that a caller done with it
+// can move it in: its state then becomes the World's without a second copy.
+LoopState restore_checkpoint(Scenario& scenario, io::Checkpoint checkpoint, const std::string& source,
                              const std::vector<std::string>& columns, const Communicator* ranks = nullptr);
 
 }  // namespace talus

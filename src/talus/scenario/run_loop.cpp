@@ -159,8 +159,9 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
   };
   const bool restarted = opt.restart != nullptr;
   if (restarted) {
-    loop = restore_checkpoint(sc, *opt.restart, opt.restart_source, columns, spread ? &comm : nullptr);
+    io::Checkpoint read = opt.restart.use_count() == 1 ? std::move(*opt.restart) : io::Checkpoint(*opt.restart);
     opt.restart.reset();
+    loop = restore_checkpoint(sc, std::move(read), opt.restart_source, columns, spread ? &comm : nullptr);
     guard.set_removed(loop.particles_left_domain);
     for (std::size_t r = 0; r + columns.size() <= loop.rows.size(); r += columns.size())
       csv.row(std::span<const double>(loop.rows.data() + r, columns.size()));

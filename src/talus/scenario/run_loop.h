@@ -21,7 +21,8 @@ struct RunOptions {
   std::optional<double> checkpoint_interval;  ///< s; replaces run.checkpoint_interval
   // Resume from this checkpoint (read from `restart_source`): the run goes on exactly as the
   // run that wrote it would have, and rewrites the folder's time series from its first row.
-  std::shared_ptr<const io::Checkpoint> restart;
+  // A checkpoint the run alone holds is consumed: its state moves into the World, not copied.
+  std::shared_ptr<io::Checkpoint> restart;
   std::string restart_source;
 };
 

@@ -132,7 +132,7 @@ class World {
   // `ranks`: the ranks the run goes on over. A state gathered from as many ranks is spread over
   // them as it was, each rank replaying its last build, and goes on bit for bit; any other state
   // is restored whole (then distribute() spreads it, to round-off).
-  void restore_state(const WorldState& state, const Communicator* ranks = nullptr);
+  void restore_state(WorldState state, const Communicator* ranks = nullptr);
 
   Diagnostics diagnostics() const;  ///< of the whole system, on every rank of a distributed world
   // Particles in global id order, contacts with their forces: the whole system, on every rank

@@ -175,9 +175,10 @@ WorldState World::capture_state() {
 
 namespace {
 
-// Rank r's share of a state joined rank after rank (WorldState::layout).
-WorldState share_of_rank(const WorldState& s, int r) {
-  const WorldState::RankLayout& l = s.layout;
+// Cuts a state joined rank after rank (WorldState::layout) down to rank r's share, in place: a
+// copy of the joined state would double a restart's peak memory.
+void keep_share_of_rank(WorldState& share, int r) {
+  const WorldState::RankLayout l = share.layout;
   const auto start = [r](const std::vector<std::uint64_t>& shares) {
     return std::accumulate(shares.begin(), shares.begin() + r, std::uint64_t{0});
   };
@@ -186,8 +187,8 @@ WorldState share_of_rank(const WorldState& s, int r) {
     require(from + count <= v.size(), "a rank's share runs past the stored arrays");
     std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(from), v.end());
     v.resize(count);
+    v.shrink_to_fit();
   };
-  WorldState share = s;
   const std::uint64_t p0 = start(l.particles), pn = l.particles[r];
   ParticleStore& p = share.particles;
   slice(p.position, p0, pn), slice(p.velocity, p0, pn), slice(p.angular_velocity, p0, pn), slice(p.force, p0, pn);
@@ -205,7 +206,6 @@ WorldState share_of_rank(const WorldState& s, int r) {
   slice(share.wall_memory.normal_prev, w0, wn), slice(share.wall_memory.rolling, w0, wn);
   share.ranks = 1;
   share.layout = {};
-  return share;
 }
 
 }  // namespace
@@ -217,7 +217,7 @@ bool WorldState::fits_ranks(std::uint64_t n) const {
          layout.wall_entries.size() == n;
 }
 
-void World::restore_state(const WorldState& s, const Communicator* ranks) {
+void World::restore_state(WorldState s, const Communicator* ranks) {
   const std::size_t n = s.particles.owned;
   check_particles(s.particles, table_.species(), shapes_.size(), s.next_gid);
   require(s.position_at_build.size() == n, "positions of the last neighbour-list build missing");
@@ -230,8 +230,10 @@ void World::restore_state(const WorldState& s, const Communicator* ranks) {
     const WorldState::RankLayout& l = s.layout;
     spread_.ranks = RankGrid::with_cuts(*ranks, settings_.domain, l.cut, l.min_width, l.axis);
     for (SlabDecomposition& axis : spread_.ranks.axes) axis.rebalance = false;  // the replayed build keeps its cuts
-    replay_last_build(share_of_rank(s, ranks->rank()));
-    for (const int a : spread_.ranks.stage_axes()) spread_.ranks.axes[a].rebalance = l.rebalance;
+    const bool rebalance = l.rebalance;  // the share forgets the layout
+    keep_share_of_rank(s, ranks->rank());
+    replay_last_build(s);
+    for (const int a : spread_.ranks.stage_axes()) spread_.ranks.axes[a].rebalance = rebalance;
     return;
   }
   if (s.ranks > 1) {
