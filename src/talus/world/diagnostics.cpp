@@ -110,11 +110,10 @@ Diagnostics World::local_diagnostics() const {
         add_points(shaped_.wall_points.of(e), table_.wall(p.species[i], w.material), p.radius[i]);
         continue;
       }
-      const Vec3 origin = w.origin_at(time_);
-      const double overlap = p.radius[i] - dot(p.position[i] - origin, w.normal);
-      if (overlap <= 0 || !wall_faces(w, origin, p.position[i], 0.0)) continue;
+      SphereWallTouch touch;
+      if (!sphere_touches_wall(w, w.origin_at(time_), p.position[i], p.radius[i], touch)) continue;
       ++d.wall_contacts;
-      add_contact_energy(d, table_.wall(p.species[i], w.material), overlap, p.radius[i], p.radius[i],
+      add_contact_energy(d, table_.wall(p.species[i], w.material), touch.overlap, p.radius[i], p.radius[i],
                          lists_.walls.memory, e);
     }
   return d;
@@ -245,16 +244,15 @@ Snapshot World::local_snapshot(PartnerNames names, std::size_t* owned_records) c
         }
         continue;
       }
-      const Vec3 origin = w.origin_at(time_);
-      const double overlap = p.radius[i] - dot(p.position[i] - origin, w.normal);
-      if (overlap <= 0 || !wall_faces(w, origin, p.position[i], 0.0)) continue;
+      SphereWallTouch touch;
+      if (!sphere_touches_wall(w, w.origin_at(time_), p.position[i], p.radius[i], touch)) continue;
       ContactRecord rec;
       rec.i = record_of[i];
       rec.wall = lists_.walls.wall(e);
-      rec.normal = w.normal;
-      rec.point = p.position[i] - w.normal * (p.radius[i] - 0.5 * overlap);
+      rec.normal = touch.normal;
+      rec.point = p.position[i] - touch.normal * (p.radius[i] - 0.5 * touch.overlap);
       rec.force = -lists_.walls.force_on_wall[e];
-      rec.overlap = overlap;
+      rec.overlap = touch.overlap;
       s.contacts.push_back(rec);
     }
   return s;

@@ -212,15 +212,16 @@ void World::wall_forces(double memory_dt) {
           continue;
         }
         if (fixed) continue;
-        if (!active[w] || gap >= r || (wall.bounded && gap < 0) || !wall_faces(wall, origin[w], p.position[i], 0.0)) {
+        SphereWallTouch touch;
+        if (!active[w] || !sphere_touches_wall(wall, origin[w], p.position[i], r, touch)) {
           mem.clear(e);
           continue;
         }
         ContactGeometry g;
-        g.normal = wall.normal;
-        g.overlap = r - gap;
-        g.arm_i = wall.normal * -(r - 0.5 * g.overlap);  // midpoint of the two deepest points (Huet et al. 2021, Fig. 2)
-        g.inv_distance = 0;                               // a plane's normal does not turn
+        g.normal = touch.normal;
+        g.overlap = touch.overlap;
+        g.arm_i = touch.normal * -(r - 0.5 * g.overlap);  // midpoint of the two deepest points (Huet et al. 2021, Fig. 2)
+        g.inv_distance = touch.inv_distance;              // a rim's normal turns as the sphere goes round it
         const ContactMotion m{p.velocity[i], p.angular_velocity[i], wall_velocity[w], Vec3{}};
         const ContactHistoryRef h = memory_ref(mem, e);
         const ContactResult res = contact_force<Model>(g, m, table_.wall(p.species[i], wall.material),

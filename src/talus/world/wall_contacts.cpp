@@ -1,5 +1,6 @@
 #include "talus/world/wall_contacts.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace talus {
@@ -9,6 +10,26 @@ bool wall_faces(const Wall& w, const Vec3& origin, const Vec3& x, double margin)
   const Vec3 q = x - origin;
   return std::abs(dot(q, w.axis_u)) <= w.half_extent_u + margin &&
          std::abs(dot(q, w.axis_v)) <= w.half_extent_v + margin;
+}
+
+bool sphere_touches_wall(const Wall& w, const Vec3& origin, const Vec3& x, double radius, SphereWallTouch& touch) {
+  const Vec3 q = x - origin;
+  const double gap = dot(q, w.normal);
+  if (gap >= radius || (w.bounded && gap < 0)) return false;
+  if (w.bounded) {
+    const double u = dot(q, w.axis_u), v = dot(q, w.axis_v);
+    const double beyond_u = u - std::clamp(u, -w.half_extent_u, w.half_extent_u);
+    const double beyond_v = v - std::clamp(v, -w.half_extent_v, w.half_extent_v);
+    if (beyond_u != 0 || beyond_v != 0) {  // off the face: the rim
+      const Vec3 d = w.axis_u * beyond_u + w.axis_v * beyond_v + w.normal * gap;
+      const double distance = std::sqrt(dot(d, d));
+      if (distance >= radius || distance == 0) return false;
+      touch = {d / distance, radius - distance, 1 / distance};
+      return true;
+    }
+  }
+  touch = {w.normal, radius - gap, 0};
+  return true;
 }
 
 void WallContactList::build(const ParticleStore& p, const std::vector<Wall>& walls, double time, double skin,

@@ -54,4 +54,15 @@ class WallContactList {
 // projects inside a bounded wall (with `margin` of slack).
 bool wall_faces(const Wall& wall, const Vec3& origin, const Vec3& x, double margin);
 
+// Where a sphere touches a wall.
+struct SphereWallTouch {
+  Vec3 normal;              ///< from the wall towards the sphere's centre
+  double overlap = 0;       ///< m
+  double inv_distance = 0;  ///< 1/m: 1/|x - c| on a plate's rim, 0 on a face (a face's normal cannot turn)
+};
+// A plain wall is its plane. A bounded wall is a one-sided plate: a sphere in front of it meets the
+// rectangle's closest point c, on the face, an edge or a corner, so a sphere coming round an edge
+// is touched from zero depth on, not caught at once when its centre comes over the face.
+bool sphere_touches_wall(const Wall& wall, const Vec3& origin, const Vec3& x, double radius, SphereWallTouch& touch);
+
 }  // namespace talus
