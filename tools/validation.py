@@ -134,6 +134,13 @@ def run_chute_study(study, args, runs):
     compact_chute(study, out)
 
 
+def copy_present(names, source: Path, dest: Path):
+    """Copies the files of `names` that `source` holds into `dest`."""
+    for name in names:
+        if (source / name).exists():
+            shutil.copyfile(source / name, dest / name)
+
+
 def restore_kept_chute(study, out: Path):
     """Puts the cases kept under validation/ back into a runs folder that lacks them (a fresh
     checkout): the study reuses a case by its summary.json, so they are not run again."""
@@ -142,9 +149,7 @@ def restore_kept_chute(study, out: Path):
         if not finished(case) or (target / "summary.json").exists():
             continue
         target.mkdir(parents=True, exist_ok=True)
-        for name in CHUTE_CASE_FILES:
-            if (case / name).exists():
-                shutil.copyfile(case / name, target / name)
+        copy_present(CHUTE_CASE_FILES, case, target)
 
 
 def compact_chute(study, out: Path):
@@ -161,9 +166,7 @@ def compact_chute(study, out: Path):
         if not finished(case):
             continue
         (dest / case.name).mkdir(exist_ok=True)
-        for name in CHUTE_CASE_FILES:
-            if (case / name).exists():
-                shutil.copyfile(case / name, dest / case.name / name)
+        copy_present(CHUTE_CASE_FILES, case, dest / case.name)
         kept += 1
     print(f"weinhart2012/{study.name}: {kept} finished cases kept under {dest}")
 
@@ -200,9 +203,7 @@ def restore_kept(fam: Family, runs_dir: Path):
         if not finished(run_dir) or (target / "summary.json").exists():
             continue
         target.mkdir(parents=True, exist_ok=True)
-        for name in KEPT_FILES:
-            if (run_dir / name).exists():
-                shutil.copyfile(run_dir / name, target / name)
+        copy_present(KEPT_FILES, run_dir, target)
 
 
 def compact(fam: Family, runs_dir: Path):
@@ -213,9 +214,7 @@ def compact(fam: Family, runs_dir: Path):
             continue
         dest = fam.folder(VALIDATION) / run_dir.parent.name / run_dir.name
         dest.mkdir(parents=True, exist_ok=True)
-        for name in KEPT_FILES:
-            if (run_dir / name).exists():
-                shutil.copyfile(run_dir / name, dest / name)
+        copy_present(KEPT_FILES, run_dir, dest)
         kept += 1
     print(f"{fam.paper}/{fam.name}: {kept} finished runs kept under {fam.folder(VALIDATION)}")
 
