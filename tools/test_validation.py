@@ -103,13 +103,39 @@ class Validation(unittest.TestCase):
         write_csv(self.base / "weinhart2012" / "hstop" / "hstop_intervals.csv", intervals)
         write_csv(self.base / "weinhart2012" / "flowmap" / "sweep_runs.csv", runs)
         lines = []
-        validation.weinhart_report(lines, self.base)
+        validation.weinhart_report(lines, [], self.base)
         table = json.loads((self.base / "weinhart2012" / "table1.json").read_text())
         self.assertEqual(table["lambda"], 1)
         for name, value in t1.items():
             self.assertTrue(table[name + "_err"] > 0, name)
             self.assertLess(abs(table[name] - value), 4 * table[name + "_err"], f"{name}: {table[name]} vs {value}")
         self.assertTrue(any(line.startswith("| delta1 |") for line in lines))
+        self.assertTrue(table["staircase_complete"])
+
+    def test_a_staircase_still_running_is_reported_from_its_cases(self):
+        # Thin layers only: the intervals come from hstop_runs.csv, and an Eq. 35 fit that heights
+        # below 12 d cannot determine leaves Table 1 empty rather than printing its bounds.
+        t1 = validation.TABLE1
+        rows = []
+        for H in [4, 6, 8, 10, 12]:
+            h = H - 0.6
+            theta_stop = float(chute_fits.theta_stop35(h, t1["A"], t1["delta1"], t1["delta2"]))
+            for theta in [round(2 * theta_stop) / 2 - 0.5 * k for k in range(-1, 3)]:
+                rows.append({"lambda": 1, "H": H, "angle": theta, "h": h, "flow_state": "steady",
+                             "arrested": int(theta < theta_stop), "froude": 0.1, "alpha": 1.3, "K": 1.1})
+        write_csv(self.base / "weinhart2012" / "hstop" / "hstop_runs.csv", rows)
+        lines = []
+        validation.weinhart_report(lines, [], self.base)
+        table = json.loads((self.base / "weinhart2012" / "table1.json").read_text())
+        self.assertFalse(table["staircase_complete"])
+        self.assertEqual(table["staircase_max_H"], 12)
+        self.assertTrue(any("still running" in line for line in lines))
+        angle_rows = [line for line in lines if line.startswith("| H = ")]
+        self.assertEqual(len(angle_rows), 5)
+        for line in angle_rows:  # every interval brackets the curve that decided its cases
+            self.assertTrue(line.endswith("| 0.00° |"), line)
+        self.assertIsNone(table["delta1"])
+        self.assertTrue(any("not determined yet" in line for line in lines))
 
 
 if __name__ == "__main__":

@@ -119,7 +119,8 @@ def shape_factor54(h, theta, d_lambda, hs1, n=400):
     out = []
     for hi, th in zip(np.atleast_1d(np.asarray(h, float)), np.atleast_1d(np.asarray(theta, float))):
         z = np.linspace(0, hi, n)
-        bl = min(d_lambda * hstop35(th, hs1["A"], hs1["delta1"], hs1["delta2"]) / hi, hi)
+        # Clamped: above delta2 Eq. (35) gives a negative h_stop, i.e. no base layer at all.
+        bl = min(max(d_lambda * hstop35(th, hs1["A"], hs1["delta1"], hs1["delta2"]) / hi, 0.0), hi)
         dub = lambda zz: 1.5 * np.sqrt(np.maximum(hi - zz, 0.0))  # d/dz of (1 - ((h - z)/h)^1.5) h^1.5  # noqa: E731
         top = max(hi - 5, bl)
         strain = np.where(z < bl, dub(bl) * (1 - 2.0 / 3.0 * (bl - z) / max(bl, 1e-12)),
@@ -152,6 +153,40 @@ def fit_constant(y):
     y = np.asarray(y, float)
     m = float(np.mean(y))
     return m, float(np.std(y, ddof=1) / math.sqrt(len(y))) if len(y) > 1 else float("nan"), err(y - m)
+
+
+def arrest_intervals(rows):
+    """Angle intervals per (lambda, H) and height intervals per (lambda, theta) between the
+    largest arrested and smallest flowing value of a staircase's cases (rows of hstop_runs.csv,
+    finished or not); heights h measured from sigma_zz (Eq. 42)."""
+    out = []
+    by = {}
+    for r in rows:
+        by.setdefault((r["lambda"], r["H"]), []).append(r)
+    for (lam, H), rs in sorted(by.items()):
+        arr = [r for r in rs if r["arrested"]]
+        flo = [r for r in rs if not r["arrested"]]
+        if arr and flo:
+            a = max(arr, key=lambda r: r["angle"])
+            f = min(flo, key=lambda r: r["angle"])
+            if a["angle"] < f["angle"]:
+                hs = [x["h"] for x in (a, f) if x["h"] not in (None, "")]
+                out.append({"lambda": lam, "kind": "angle", "H": H, "h": sum(hs) / len(hs) if hs else "",
+                            "angle_lo": a["angle"], "angle_hi": f["angle"], "h_lo": "", "h_hi": ""})
+    by = {}
+    for r in rows:
+        by.setdefault((r["lambda"], r["angle"]), []).append(r)
+    for (lam, th), rs in sorted(by.items()):
+        arr = [r for r in rs if r["arrested"]]
+        flo = [r for r in rs if not r["arrested"]]
+        if arr and flo:
+            a = max(arr, key=lambda r: r["H"])
+            f = min(flo, key=lambda r: r["H"])
+            if a["H"] < f["H"]:
+                out.append({"lambda": lam, "kind": "height", "H": "", "h": "", "angle_lo": th, "angle_hi": th,
+                            "h_lo": a["h"] if a["h"] is not None else "", "h_hi": f["h"] if f["h"] is not None else ""})
+    return out
+
 
 
 # --- the command line -----------------------------------------------------------------------
@@ -189,9 +224,12 @@ def fit_all(intervals, runs, lam):
         mu = friction_law([r["h"] for r in steady], [r["froude"] for r in steady], hs, p["beta"], p["gamma"])
         out["friction_law"] = {"err_mu": err(mu - T(np.array([r["angle"] for r in steady])))}
         if lam >= 5.0 / 6.0 - 1e-9 and len(steady) >= 2:
-            p, se, e = fit_shape_factor([r["h"] for r in steady], [r["angle"] for r in steady],
-                                        [r["alpha"] for r in steady], hs)
-            out["shape_factor"] = {"params": p, "se": se, "err": e}
+            try:
+                p, se, e = fit_shape_factor([r["h"] for r in steady], [r["angle"] for r in steady],
+                                            [r["alpha"] for r in steady], hs)
+                out["shape_factor"] = {"params": p, "se": se, "err": e}
+            except ValueError:
+                pass  # a flow thinner than its base layer (h <= b_lambda): Eq. (54) has no profile there
     if len(steady) >= 3:
         bulk = [r for r in steady if r.get("bulk_volume_fraction") not in ("", None)]
         if len(bulk) >= 4:

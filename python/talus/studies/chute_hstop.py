@@ -17,7 +17,7 @@ Usage: python3 -m talus hstop SCENARIO [--talus BIN] [--lambda 1,0.5] [--jobs 2]
 """
 import os
 
-from . import chute_runs, engine, slurm_array
+from . import chute_fits, chute_runs, engine, slurm_array
 
 
 class Staircase:
@@ -45,38 +45,6 @@ class Staircase:
         lam, H, th = self.case
         if H > self.h_max or th < self.theta_min or th > 60 or len(self.visited) >= self.max_cases:
             self.case = None
-
-
-def intervals(rows):
-    """Angle intervals per (lambda, H) and height intervals per (lambda, theta) between the
-    largest arrested and smallest flowing value; heights h measured from sigma_zz (Eq. 42)."""
-    out = []
-    by = {}
-    for r in rows:
-        by.setdefault((r["lambda"], r["H"]), []).append(r)
-    for (lam, H), rs in sorted(by.items()):
-        arr = [r for r in rs if r["arrested"]]
-        flo = [r for r in rs if not r["arrested"]]
-        if arr and flo:
-            a = max(arr, key=lambda r: r["angle"])
-            f = min(flo, key=lambda r: r["angle"])
-            if a["angle"] < f["angle"]:
-                hs = [x["h"] for x in (a, f) if x["h"] not in (None, "")]
-                out.append({"lambda": lam, "kind": "angle", "H": H, "h": sum(hs) / len(hs) if hs else "",
-                            "angle_lo": a["angle"], "angle_hi": f["angle"], "h_lo": "", "h_hi": ""})
-    by = {}
-    for r in rows:
-        by.setdefault((r["lambda"], r["angle"]), []).append(r)
-    for (lam, th), rs in sorted(by.items()):
-        arr = [r for r in rs if r["arrested"]]
-        flo = [r for r in rs if not r["arrested"]]
-        if arr and flo:
-            a = max(arr, key=lambda r: r["H"])
-            f = min(flo, key=lambda r: r["H"])
-            if a["H"] < f["H"]:
-                out.append({"lambda": lam, "kind": "height", "H": "", "h": "", "angle_lo": th, "angle_hi": th,
-                            "h_lo": a["h"] if a["h"] is not None else "", "h_hi": f["h"] if f["h"] is not None else ""})
-    return out
 
 
 def write_intervals(path, rows):
@@ -174,6 +142,6 @@ def run(a):
             print("h_stop search: lambda %g done; other staircases still run" % lambdas[a.case_index])
             return
         chute_runs.write_rows(os.path.join(a.out, "hstop_runs.csv"), rows)
-    write_intervals(os.path.join(a.out, "hstop_intervals.csv"), intervals(rows))
+    write_intervals(os.path.join(a.out, "hstop_intervals.csv"), chute_fits.arrest_intervals(rows))
     print("h_stop search: %d cases; %s/hstop_runs.csv, %s/hstop_intervals.csv" % (len(rows), a.out, a.out))
 

@@ -63,6 +63,33 @@ class ChuteFits(unittest.TestCase):
         p, se, _ = cf.fit_stress_ratio(theta, K)
         self.assertRecovers(truth, p, se)
 
+    def test_arrest_intervals_of_a_partial_staircase(self):
+        # A staircase cut off part-way: each interval brackets the threshold that decided its cases.
+        rows = []
+        for H, angles in ((4, [21, 22, 23, 24, 25, 26, 25.5]), (6, [25.5, 25, 24.5])):
+            for th in angles:
+                h = H - 0.2
+                rows.append({"lambda": 1.0, "H": H, "angle": th, "h": h,
+                             "arrested": float(h < cf.hstop35(th, **HS))})
+        iv = cf.arrest_intervals(rows)
+        angle = [r for r in iv if r["kind"] == "angle"]
+        self.assertEqual([r["H"] for r in angle], [4])  # H = 6 has not arrested yet: no interval
+        self.assertEqual((angle[0]["angle_lo"], angle[0]["angle_hi"]), (25.0, 25.5))
+        self.assertTrue(25.0 <= cf.theta_stop35(3.8, **HS) <= 25.5)
+        heights = {r["angle_lo"]: (r["h_lo"], r["h_hi"]) for r in iv if r["kind"] == "height"}
+        self.assertEqual(heights, {25.0: (3.8, 5.8)})
+
+    def test_fit_all_skips_a_flow_thinner_than_its_base_layer(self):
+        # Eq. (54) has no profile when b_lambda >= h; the other fits still come out.
+        runs = [{"lambda": 1.0, "flow_state": "steady", "h": h, "angle": th, "froude": f, "alpha": 1.3, "K": 1.05}
+                for h, th, f in ((4.2, 25.5, 0.07), (5.9, 24.5, 0.1), (5.8, 23.5, 0.06))]
+        iv = [{"lambda": 1.0, "kind": "angle", "h": h, "angle_lo": t - 0.25, "angle_hi": t + 0.25}
+              for h in (4.0, 8.0, 16.0, 32.0) for t in [float(cf.theta_stop35(h, **HS))]]
+        out = cf.fit_all(iv, runs, 1.0)
+        self.assertIn("hstop35", out)
+        self.assertIn("flow_rule", out)
+        self.assertIn("stress_ratio", out)
+
     def test_shape_factor_eq54(self):
         theta = np.repeat([22.0, 24.0, 26.0, 28.0], 4)
         h = np.tile([10.0, 18.0, 27.0, 36.0], 4)
