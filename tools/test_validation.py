@@ -134,6 +134,7 @@ class Validation(unittest.TestCase):
         self.assertEqual(len(angle_rows), 5)
         for line in angle_rows:  # every interval brackets the curve that decided its cases
             self.assertTrue(line.endswith("| 0.00° |"), line)
+        self.assertIn("Every case lies on the side of the paper's curve that its outcome says.", lines)
         self.assertIsNone(table["delta1"])
         self.assertTrue(any("not determined yet" in line for line in lines))
 
