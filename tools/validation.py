@@ -525,13 +525,23 @@ def wrong_side_lines(chute_fits, staircase):
         t = r.get("arrest_time")
         arrest = f"{t:.0f}" if isinstance(t, float) else ""
         lines.append(f"| {r['H']:g} | {r['angle']:g}° | {r['h']:.2f} | {r['flow_state']} | {arrest} | {excess:+.2f}° |")
+    # The paper's own cases at H = 20 (Fig. 3) lie off its fitted curve as well.
+    fig3 = [r for r in staircase if r["H"] == 20]
+    if fig3:
+        outcome = ", ".join(f"{r['angle']:g}° {r['flow_state']}" for r in fig3)
+        h20 = fig3[0]["h"]
+        stop20 = float(chute_fits.theta_stop35(h20, p["A"], p["delta1"], p["delta2"]))
+        lines += ["", f"Weinhart et al.'s Fig. 3 (H = 20, the same base) has the flow stop for theta <= 20.5° and "
+                  f"stay steady from 21° on, although Eq. 35 puts theta_stop at {stop20:.2f}° for the h = "
+                  f"{h20:.1f} of Talus' H = 20 layer: its own cases lie up to {20.5 - stop20:.2f}° off its fit. "
+                  f"Talus at H = 20: {outcome}."]
     thick = [excess for r, excess in wrong if bool(r["arrested"]) and excess > 0.5]
     if thick:
         lines += ["", f"{len(thick)} thick layers arrest more than 0.5° (the bar on delta1 and delta2) above the "
-                  "paper's curve: a disagreement beyond the staircase's resolution, growing with h. Not yet "
-                  "explained; the candidates are the layer's preparation (each case starts from the poured "
-                  "packing, and these arrest by t = 150, before any steady flow), the arrest criterion's time "
-                  "window, and the base."]
+                  "paper's curve: a disagreement beyond the staircase's resolution, growing with h, which the "
+                  "paper's Fig. 3 cannot settle (it has H = 20 only). Not yet explained; the candidates are the "
+                  "layer's preparation (each case starts from the poured packing, and these arrest by t = 150, "
+                  "before any steady flow), the arrest criterion's time window, and the base."]
     return lines + [""]
 
 
