@@ -731,5 +731,32 @@ TEST(ModelCombinations, FlatBaseChuteStartsClearOfTheBase) {
   EXPECT_LT(w->diagnostics().max_speed, 1.0);
 }
 
+TEST(ModelCombinations, ChuteLayerStartsAtItsInitialVolumeFraction) {
+  // Weinhart et al. 2012, Sect. 5: the layer is placed at about 0.3 and falls to about H.
+  ChuteSetup s;
+  s.flow = s.base = weinhart_chute_contact();
+  s.fill_height = 6;
+  s.length = 10;
+  s.width = 5;
+  auto w = build_chute(s);
+  const ParticleStore& p = w->particles();
+  const double volume = std::numbers::pi / 6;
+  const double top = 6 * 50 * volume / (50 * s.initial_volume_fraction);  // 10.47
+  std::size_t flowing = 0, in_slab = 0;
+  double highest = 0;
+  for (std::size_t i = 0; i < p.owned; ++i) {
+    if (p.species[i] != 0) continue;
+    ++flowing;
+    highest = std::max(highest, p.position[i].z);
+    if (p.position[i].z > 1 && p.position[i].z < top - 1) ++in_slab;
+  }
+  EXPECT_EQ(flowing, 300u);
+  EXPECT_LE(highest, top);
+  EXPECT_GT(highest, top - 1);
+  // About 240 centres in the slab: a binomial standard deviation of 2.8 %, so 10 % is 3.5 sigma.
+  const double fraction = static_cast<double>(in_slab) * volume / (50 * (top - 2));
+  EXPECT_NEAR(fraction, 0.3, 0.03);
+}
+
 }  // namespace
 }  // namespace talus

@@ -240,6 +240,13 @@ TEST(ScenarioErrors, ChuteNarrowerThanTwoDiameters) {
   EXPECT_EQ(load_error(chute), "case.toml:5: chute.length: periodic box narrower than two particle diameters plus skin");
 }
 
+TEST(ScenarioErrors, ChuteInitialVolumeFractionPastRandomInsertion) {
+  // Random sequential insertion jams near 0.38: above 0.35 the filling would stall.
+  const std::string chute =
+      "[run]\nend_time = 1.0\n\n[chute]\ninitial_volume_fraction = 0.5\n\n[contact]\nnormal_stiffness = 2e5\n";
+  EXPECT_EQ(load_error(chute), "case.toml:5: chute.initial_volume_fraction: must be in [0.1, 0.35], got 0.5");
+}
+
 TEST(ScenarioErrors, ParticleCountAboveTheLimit) {
   // 1e12 particles were drawn one by one until memory ran out.
   const std::string insert =

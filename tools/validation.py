@@ -538,11 +538,47 @@ def wrong_side_lines(chute_fits, staircase):
     thick = [excess for r, excess in wrong if bool(r["arrested"]) and excess > 0.5]
     if thick:
         lines += ["", f"{len(thick)} thick layers arrest more than 0.5° (the bar on delta1 and delta2) above the "
-                  "paper's curve: a disagreement beyond the staircase's resolution, growing with h, which the "
-                  "paper's Fig. 3 cannot settle (it has H = 20 only). Not yet explained; the candidates are the "
-                  "layer's preparation (each case starts from the poured packing, and these arrest by t = 150, "
-                  "before any steady flow), the arrest criterion's time window, and the base."]
+                  "paper's curve: a disagreement beyond the staircase's resolution, growing with h."]
     return lines + [""]
+
+
+def preparation_lines(chute_fits, out, staircase):
+    """The staircase under the paper's literal fill rule (hstop_fill_growth/: the region raised by
+    0.01 d per refused placement, which leaves the layer at a volume fraction near 0.15 in a column
+    about four times H) beside the present one (chute.initial_volume_fraction = 0.3, the paper's
+    stated fraction), case by case where both ran the same (H, theta)."""
+    old = chute_fits._read(str(out / "hstop_fill_growth" / "hstop_runs.csv"))
+    if not old:
+        return []
+    p = TABLE1
+    thick = [r for r in old if bool(r["arrested"]) and r["h"] != "" and
+             r["angle"] - float(chute_fits.theta_stop35(r["h"], p["A"], p["delta1"], p["delta2"])) > 0.5]
+    thick_heights = ", ".join("%g" % r["H"] for r in thick)
+    top_H = max(r["H"] for r in old)
+    lines = [f"**Preparation.** A first staircase ({len(old)} cases, H = 4 to {top_H:g}, kept in "
+             "`weinhart2012/hstop_fill_growth/`) placed the layer by the paper's literal rule: the filling region "
+             "rises by 0.01 d at each refused placement. That rule leaves a volume fraction near 0.15 at the bottom "
+             "and 0.03 at the top of a column about four times H, not the paper's stated 'about 0.3' (Sect. 5): the "
+             "bottom of the column lands and settles before the rest arrives, so a thick layer is built on a bed "
+             f"already at rest. There {len(thick)} thick layers (H = "
+             f"{thick_heights}) arrested more than 0.5° above the paper's curve. The "
+             "present staircase places the layer at the stated fraction 0.3 (`chute.initial_volume_fraction`), "
+             "uniform up to 1.75 H, so that the whole layer compacts at once.", ""]
+    new = {(r["H"], r["angle"]): r for r in staircase}
+    for case in sorted((out / "hstop").glob("lambda1_H*_theta*")):  # also cases run beside the staircase
+        f = case / "summary.json"
+        H, angle = case.name.split("_H")[1].split("_theta")
+        if f.exists() and (float(H), float(angle)) not in new:
+            sm = json.loads(f.read_text())
+            new[(float(H), float(angle))] = {"flow_state": sm.get("flow_state"), "h": sm.get("h")}
+    both = [(r, new[(r["H"], r["angle"])]) for r in old if (r["H"], r["angle"]) in new]
+    if both:
+        lines += ["| H | theta | fill rule 0.01 d per refusal | volume fraction 0.3 |", "|---|---|---|---|"]
+        for a, b in both:
+            lines.append(f"| {a['H']:g} | {a['angle']:g}° | {a['flow_state']}, h = {a['h']:.2f} | "
+                         f"{b['flow_state']}, h = {b['h']:.2f} |")
+        lines.append("")
+    return lines
 
 
 def plot_hstop(chute_fits, rows, fits, out):
@@ -593,6 +629,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
     lines += ["## Weinhart et al. 2012: h_stop and the flow rule, lambda = 1", ""]
     if not intervals and not runs:
         lines += ["No chute cases have run yet (`scripts/validate.sh run --only hstop,flowmap`).", ""]
+        lines += preparation_lines(chute_fits, out, staircase)
         return
     fits = chute_fits.fit_all(intervals, runs, 1.0)
     hs, fr = fits.get("hstop35"), fits.get("flow_rule")
@@ -618,6 +655,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
     lines += table_lines + ["", f"The paper's curve passes within {worst:.2f}° of every angle interval so far "
                             "(the intervals are 0.5° wide).", ""]
     lines += wrong_side_lines(chute_fits, staircase)
+    lines += preparation_lines(chute_fits, out, staircase)
     lines += ["Fits through the interval midpoints (standard errors from the least-squares covariance):", "",
               "| fit | points | A | delta1 | delta2 | err |", "|---|---|---|---|---|---|"]
     for key, label in (("hstop35", "Eq. 35, angle intervals"), ("hstop38", "Eq. 38, height intervals")):

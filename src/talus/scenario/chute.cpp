@@ -119,7 +119,8 @@ std::unique_ptr<World> build_chute(const ChuteSetup& s) {
   auto world = make_chute_world(s);
   const Domain& domain = world->settings().domain;
   std::mt19937_64 rng(s.seed);
-  SphereOverlapIndex index({0, 0, domain.lo.z}, {s.length, s.width, 4 * s.fill_height + 10}, domain.periodic,
+  // Tall enough for the loosest initial layer the scenario reader allows (volume fraction 0.1).
+  SphereOverlapIndex index({0, 0, domain.lo.z}, {s.length, s.width, 6 * s.fill_height + 10}, domain.periodic,
                            std::max(s.diameter, s.base_diameter));
   if (s.base_diameter > 0) {
     for (const Vec3& x : make_rough_base(s.length, s.width, s.base_diameter, s.seed + 1)) {
@@ -132,7 +133,10 @@ std::unique_ptr<World> build_chute(const ChuteSetup& s) {
   // Centres a radius above a flat base: the wall is not in the overlap index, and a sphere placed
   // across it would start up to a radius deep in contact and be shot off the base.
   const double bottom = s.base_diameter > 0 ? 0.0 : 0.5 * s.diameter;
-  insert_growing(index, n, {0, 0, bottom}, {s.length, s.width, s.fill_height}, 0.01,
+  // Random sequential insertion at fixed height: uniform positions, overlapping ones refused.
+  const double volume = std::numbers::pi / 6 * s.diameter * s.diameter * s.diameter;
+  const double top = static_cast<double>(n) * volume / (s.length * s.width * s.initial_volume_fraction);
+  insert_growing(index, n, {0, 0, bottom}, {s.length, s.width, top}, 0.0,
                  [&](std::mt19937_64&) { return 0.5 * s.diameter; }, rng);
   for (std::size_t k = first; k < index.spheres().size(); ++k)
     world->add_sphere(index.spheres()[k].centre, index.spheres()[k].radius, s.density, 0);

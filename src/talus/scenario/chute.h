@@ -16,6 +16,12 @@ struct ChuteSetup {
   double base_diameter = 1;     ///< lambda; 0 gives a flat wall
   double fill_height = 20;      ///< H: about 200 H particles per 20 x 10 of area
   double angle_deg = 24;        ///< theta
+  // The poured layer's volume fraction before it falls (Weinhart et al. 2012, Sect. 5: "about
+  // 0.3", which gives the layer the kinetic energy to start flowing as it compacts to H). The
+  // paper's rule of raising the box by 0.01 d per rejected insertion would give about 0.15 at
+  // the bottom and less above, a column four times H: its lower part then settles and may arrest
+  // before the rest has landed, so a thick layer is built on a bed already at rest.
+  double initial_volume_fraction = 0.3;
   double diameter = 1;          ///< d of the flowing particles
   double density = 6 / 3.14159265358979323846;  ///< m = 1 for d = 1
   ContactParams flow;           ///< flow-flow contacts

@@ -272,6 +272,9 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
     chute_setup.base_diameter = f.get_or<double>("chute.base_diameter", 1, io::non_negative);
     chute_setup.fill_height = f.get_or<double>("chute.fill_height", 20, io::positive);
     chute_setup.angle_deg = f.get_or<double>("chute.angle", 24, io::in_range(0, 89));
+    // Random sequential insertion jams near 0.38; the loosest bound keeps the column within the domain.
+    chute_setup.initial_volume_fraction =
+        f.get_or<double>("chute.initial_volume_fraction", chute_setup.initial_volume_fraction, io::in_range(0.1, 0.35));
     chute_setup.seed = run.seed;
     chute_setup.model = ws.tangential_model;
     // Checked before the rough base settles in a box of the same size (make_rough_base), whose
