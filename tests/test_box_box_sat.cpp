@@ -128,6 +128,15 @@ TEST(BoxBoxSat, KeptAxisHoldsWhileItsReserveLasts) {
     const double reserve = box_box_axis_reserve(oriented_box(ha, pa), oriented_box(hb, pb), first.axis, turn_per_travel);
     ASSERT_GE(reserve, 0.0);
     if (reserve > 1e-7) ++reusable;
+    // A full query renews the reserve from its own overlaps: the same axis and the same bound.
+    for (const int warm : {-1, first.axis}) {
+      double fused_reserve = -1;
+      const BoxBoxSat fused =
+          box_box_sat_with_reserve(oriented_box(ha, pa), oriented_box(hb, pb), warm, turn_per_travel, &fused_reserve);
+      ASSERT_EQ(fused.axis, first.axis) << "trial " << trial;
+      ASSERT_EQ(fused.depth, first.depth) << "trial " << trial;
+      ASSERT_EQ(fused_reserve, reserve) << "trial " << trial << ", warm " << warm;
+    }
     for (int k = 0; k < 4; ++k) {
       // Up to the whole reserve, split at random between the two bodies.
       const double travel = reserve * (k == 0 ? 1.0 : share(rng)), to_a = share(rng) * travel;

@@ -111,9 +111,13 @@ struct SatAxes {
   }
 };
 
-}  // namespace
+double reserve_from_overlaps(const OrientedBox& a, const OrientedBox& b, int axis, double turn_per_travel,
+                             const double (&overlap)[15], const double (&length)[15]);
 
-BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis) {
+// The 15-axis search; with `reserve`, a touching answer also gets its box_box_axis_reserve from
+// the overlaps the search formed, so a full query does not set up the 15 axes a second time.
+BoxBoxSat sat_search(const OrientedBox& a, const OrientedBox& b, int warm_axis, double turn_per_travel,
+                     double* reserve) {
   const SatAxes s(a, b);
   const bool warm = warm_axis >= 0 && warm_axis < 15;
   // A gap lasts many steps: the axis that separated last time usually still does.
@@ -158,12 +162,34 @@ BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis)
     overlap[k] = num[k] / std::sqrt(len2[k]);
     if (overlap[k] < threshold) best = k;
   }
-  if (warm && valid[warm_axis] && overlap[warm_axis] <= overlap[best] * 1.005) {
-    BoxBoxSat r;
+  BoxBoxSat r;
+  if (warm && valid[warm_axis] && overlap[warm_axis] <= overlap[best] * 1.005)
     box_box_sat_on_axis(a, b, warm_axis, r);
-    return r;
+  else
+    r = s.result(best, overlap[best], false);
+  if (reserve) {
+    double length[15] = {1, 1, 1, 1, 1, 1};
+    *reserve = 0;  // parallel edges: an axis with no bound, re-test every step
+    for (int k = 6; k < 15; ++k) {
+      if (!valid[k] || !(len2[k] > 1e-12)) return r;
+      length[k] = std::sqrt(len2[k]);
+      overlap[k] = num[k] / length[k];
+    }
+    *reserve = reserve_from_overlaps(a, b, r.axis, turn_per_travel, overlap, length);
   }
-  return s.result(best, overlap[best], false);
+  return r;
+}
+
+}  // namespace
+
+BoxBoxSat box_box_sat(const OrientedBox& a, const OrientedBox& b, int warm_axis) {
+  return sat_search(a, b, warm_axis, 0, nullptr);
+}
+
+BoxBoxSat box_box_sat_with_reserve(const OrientedBox& a, const OrientedBox& b, int warm_axis, double turn_per_travel,
+                                   double* reserve) {
+  *reserve = 0;
+  return sat_search(a, b, warm_axis, turn_per_travel, reserve);
 }
 
 // Out of line: box_box_sat answers with this same code whenever its answer is the warm axis, so
@@ -228,6 +254,13 @@ double box_box_axis_reserve(const OrientedBox& a, const OrientedBox& b, int axis
     if (!s.overlap(k, &overlap[k])) return 0;  // parallel edges: an axis with no bound, re-test every step
     length[k] = k < 6 ? 1.0 : s.edge_length(k);
   }
+  return reserve_from_overlaps(a, b, axis, turn_per_travel, overlap, length);
+}
+
+namespace {
+
+double reserve_from_overlaps(const OrientedBox& a, const OrientedBox& b, int axis, double turn_per_travel,
+                             const double (&overlap)[15], const double (&length)[15]) {
   const double ha = norm(a.half), hb = norm(b.half);
   const double spread = norm(b.centre - a.centre) + ha + hb;
   const double rounding = 1e-9 * (ha + hb);  // the AbsR bias and round-off, far above both
@@ -242,6 +275,8 @@ double box_box_axis_reserve(const OrientedBox& a, const OrientedBox& b, int axis
   }
   return std::max(reserve, 0.0);
 }
+
+}  // namespace
 
 BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, int warm_axis) {
   return box_box_sat(oriented_box(ha, pa), oriented_box(hb, pb), warm_axis);

@@ -39,11 +39,13 @@ inline BoxBoxSat lasting_box_sat(const OrientedBox& a, const OrientedBox& b, int
   if (reuse && feature_reusable(budget, stored_axis, motion.travelled) && box_box_sat_on_axis(a, b, stored_axis, sat))
     return sat;
   *full_query = true;
-  sat = box_box_sat(a, b, stored_axis);
+  double reserve = 0;
+  sat = reuse ? box_box_sat_with_reserve(a, b, stored_axis, motion.turn_per_travel, &reserve)
+              : box_box_sat(a, b, stored_axis);
   if (sat.separated)
     budget.sleep(motion.travelled, 0.0);  // the caller extends it by the gap
   else if (reuse)
-    budget = {motion.travelled + box_box_axis_reserve(a, b, sat.axis, motion.turn_per_travel), sat.axis};
+    budget = {motion.travelled + reserve, sat.axis};
   else
     budget.sleep(motion.travelled, 0.0);  // awake: touching pairs are tested every step
   return sat;
