@@ -111,8 +111,31 @@ struct SatAxes {
   }
 };
 
+// The overlap on an axis u is o(u) = min(h(u), h(-u)), h the support function of the Minkowski
+// difference A - B. When every point of A moves by at most tau_A and of B by at most tau_B,
+// h changes by at most tau_A + tau_B along a fixed u; when u turns by |du|, h changes by at most
+// |du| max|p| over A - B, with max|p| <= |c_A - c_B| + |h_A| + |h_B|. A face normal turns by
+// at most its box's rotation angle; an edge axis (a_i x b_j) / |a_i x b_j| by at most
+// 2 (theta_A + theta_B) / |a_i x b_j|. With theta_A + theta_B <= turn_per_travel times the
+// travel, each overlap changes by at most slope_k times the travel. box_box_sat keeps its warm
+// axis w while o_w <= 1.005 min_k o_k, so it is sure to keep w while, for every other axis k,
+// (o_w + slope_w T) / 1.005 <= o_k - slope_k T.
 double reserve_from_overlaps(const OrientedBox& a, const OrientedBox& b, int axis, double turn_per_travel,
-                             const double (&overlap)[15], const double (&length)[15]);
+                             const double (&overlap)[15], const double (&length)[15]) {
+  const double ha = norm(a.half), hb = norm(b.half);
+  const double spread = norm(b.centre - a.centre) + ha + hb;
+  const double rounding = 1e-9 * (ha + hb);  // the AbsR bias and round-off, far above both
+  auto slope = [&](int k) { return 1 + spread * turn_per_travel * (k < 6 ? 1.0 : 2.0 / length[k]); };
+  constexpr double kKeep = 1 / 1.005;
+  const double kept = kKeep * overlap[axis], kept_slope = kKeep * slope(axis);
+  double reserve = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 15; ++k) {
+    if (k == axis) continue;
+    const double margin = overlap[k] - kept - rounding * (1 + 1 / length[k]);
+    reserve = std::min(reserve, margin / (slope(k) + kept_slope));
+  }
+  return std::max(reserve, 0.0);
+}
 
 // The 15-axis search; with `reserve`, a touching answer also gets its box_box_axis_reserve from
 // the overlaps the search formed, so a full query does not set up the 15 axes a second time.
@@ -169,9 +192,8 @@ BoxBoxSat sat_search(const OrientedBox& a, const OrientedBox& b, int warm_axis, 
     r = s.result(best, overlap[best], false);
   if (reserve) {
     double length[15] = {1, 1, 1, 1, 1, 1};
-    *reserve = 0;  // parallel edges: an axis with no bound, re-test every step
     for (int k = 6; k < 15; ++k) {
-      if (!valid[k] || !(len2[k] > 1e-12)) return r;
+      if (!valid[k]) return r;  // parallel edges: an axis with no bound, *reserve stays 0
       length[k] = std::sqrt(len2[k]);
       overlap[k] = num[k] / length[k];
     }
@@ -238,15 +260,7 @@ BoxBoxSat box_box_sat_with_reserve(const OrientedBox& a, const OrientedBox& b, i
   return true;
 }
 
-// The overlap on an axis u is o(u) = min(h(u), h(-u)), h the support function of the Minkowski
-// difference A - B. When every point of A moves by at most tau_A and of B by at most tau_B,
-// h changes by at most tau_A + tau_B along a fixed u; when u turns by |du|, h changes by at most
-// |du| max|p| over A - B, with max|p| <= |c_A - c_B| + |h_A| + |h_B|. A face normal turns by
-// at most its box's rotation angle; an edge axis (a_i x b_j) / |a_i x b_j| by at most
-// 2 (theta_A + theta_B) / |a_i x b_j|. With theta_A + theta_B <= turn_per_travel times the
-// travel, each overlap changes by at most slope_k times the travel. box_box_sat keeps its warm
-// axis w while o_w <= 1.005 min_k o_k, so it is sure to keep w while, for every other axis k,
-// (o_w + slope_w T) / 1.005 <= o_k - slope_k T.
+// The same bound for a pair whose SAT ran elsewhere (the reserve's own set-up of the 15 axes).
 double box_box_axis_reserve(const OrientedBox& a, const OrientedBox& b, int axis, double turn_per_travel) {
   const SatAxes s(a, b);
   double overlap[15], length[15];
@@ -256,27 +270,6 @@ double box_box_axis_reserve(const OrientedBox& a, const OrientedBox& b, int axis
   }
   return reserve_from_overlaps(a, b, axis, turn_per_travel, overlap, length);
 }
-
-namespace {
-
-double reserve_from_overlaps(const OrientedBox& a, const OrientedBox& b, int axis, double turn_per_travel,
-                             const double (&overlap)[15], const double (&length)[15]) {
-  const double ha = norm(a.half), hb = norm(b.half);
-  const double spread = norm(b.centre - a.centre) + ha + hb;
-  const double rounding = 1e-9 * (ha + hb);  // the AbsR bias and round-off, far above both
-  auto slope = [&](int k) { return 1 + spread * turn_per_travel * (k < 6 ? 1.0 : 2.0 / length[k]); };
-  constexpr double kKeep = 1 / 1.005;
-  const double kept = kKeep * overlap[axis], kept_slope = kKeep * slope(axis);
-  double reserve = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 15; ++k) {
-    if (k == axis) continue;
-    const double margin = overlap[k] - kept - rounding * (1 + 1 / length[k]);
-    reserve = std::min(reserve, margin / (slope(k) + kept_slope));
-  }
-  return std::max(reserve, 0.0);
-}
-
-}  // namespace
 
 BoxBoxSat box_box_sat(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, int warm_axis) {
   return box_box_sat(oriented_box(ha, pa), oriented_box(hb, pb), warm_axis);
