@@ -71,11 +71,19 @@ std::filesystem::path results_dir_of(const std::filesystem::path& checkpoint) {
 
 int run_file(io::ScenarioFile& file, const std::string& label, std::string out, bool overwrite, bool quiet, int threads,
              const RunStart& run_start) {
-  Scenario scenario = load_scenario(file);
+  // Spread over ranks, the run's particles are built by rank 0 alone, which hands them out.
+  ScenarioLimits limits;
+  limits.particles_on_first_rank = Communicator::world().distributed();
+  Scenario scenario = load_scenario(file, limits);
   RunOptions options;
   options.scenario_toml = file.to_toml();
   if (!run_start.restart.empty()) {
-    auto checkpoint = std::make_shared<io::Checkpoint>(io::read_checkpoint(run_start.restart));
+    // Rank 0 reads the file whole and checks it; the others read their own share of a state
+    // written on as many ranks (and the whole of any other).
+    const Communicator& comm = Communicator::world();
+    auto checkpoint = std::make_shared<io::Checkpoint>(
+        comm.rank() == 0 ? io::read_checkpoint(run_start.restart)
+                         : io::read_checkpoint_share(run_start.restart, comm.rank(), comm.size()));
     if (scenario_body(checkpoint->scenario_toml) != scenario_body(options.scenario_toml) &&
         Communicator::world().rank() == 0)
       std::fprintf(stderr, "talus: note: %s differs from the scenario %s was written with; the run goes on with %s\n",

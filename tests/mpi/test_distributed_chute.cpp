@@ -8,6 +8,8 @@
 #include <numbers>
 #include <random>
 
+#include "talus/analysis/cg_fields_sum.h"
+#include "talus/analysis/coarse_grain.h"
 #include "talus/parallel/communicator.h"
 #include "talus/scenario/chute.h"
 
@@ -171,6 +173,45 @@ TEST(DistributedChute, ParticlesCrossCutsAndThePeriodicFaceWithTheirSprings) {
   const Difference d = compare(*reference, gather(*spread));
   EXPECT_LT(d.position, 1e-10);
   EXPECT_LT(d.velocity, 1e-8);
+}
+
+// Each rank coarse-grains its piece (its particles, and the contacts it lists with their
+// partners' copies); the sum over ranks is the whole system's fields, on a depth profile and on
+// a volume grid whose points lie across the cuts and the periodic faces, after the flow has
+// carried particles and loaded springs across them.
+TEST(DistributedChute, CoarseGrainedPiecesAddUpToTheWholeSystem) {
+  const Communicator& comm = Communicator::world();
+  auto spread = lattice_chute();
+  spread->distribute(comm);
+  spread->run(5000);
+  if (comm.size() > 1) ASSERT_GT(springs_across_cuts(*spread), 0);
+  if (comm.size() > 1) ASSERT_GT(comm.sum(static_cast<double>(spread->particles_moved_between_ranks())), 0);
+  const Snapshot whole = spread->snapshot();
+  const World::SnapshotPiece piece = spread->snapshot_piece();
+  const ChuteSetup s = small_chute();
+  for (const CgGrid& grid : {CgGrid::depth(-1, 6, 36), CgGrid::volume({0, 0, -1}, {s.length, s.width, 6}, 10, 4, 8)}) {
+    const CgFunction f = CgFunction::gaussian(0.5, grid.dim());
+    const CgFields expected = coarse_grain(whole, grid, f);
+    CgFields summed = coarse_grain(piece.snapshot, grid, f, piece.owned);
+    sum_over_ranks(summed, comm);
+    ASSERT_EQ(summed.values.size(), expected.values.size());
+    double scale_rho = 0, scale_stress = 0;
+    for (const CgValues& v : expected.values) {
+      scale_rho = std::max(scale_rho, v.density);
+      scale_stress = std::max(scale_stress, v.contact_stress.norm() + v.boundary_stress.norm());
+    }
+    ASSERT_GT(scale_stress, 0);
+    // The same sums in another order: round-off, 1e-12 of the largest value.
+    for (std::size_t k = 0; k < expected.values.size(); ++k) {
+      const CgValues &a = expected.values[k], &b = summed.values[k];
+      EXPECT_NEAR(b.density, a.density, 1e-12 * scale_rho) << "point " << k;
+      EXPECT_LT(norm(b.momentum - a.momentum), 1e-12 * scale_rho * (1 + norm(a.velocity())));
+      EXPECT_LT((b.contact_stress - a.contact_stress).norm(), 1e-12 * scale_stress) << "point " << k;
+      EXPECT_LT((b.boundary_stress - a.boundary_stress).norm(), 1e-12 * scale_stress) << "point " << k;
+      EXPECT_LT((b.kinetic_stress - a.kinetic_stress).norm(), 1e-10 * scale_stress) << "point " << k;
+      EXPECT_LT(norm(b.boundary_force - a.boundary_force), 1e-12 * (1 + norm(a.boundary_force)) * scale_rho);
+    }
+  }
 }
 
 // Every grid of the ranks (4 ranks: 4 x 1 x 1, 2 x 2 x 1, 1 x 2 x 2, ...), with each of its cut

@@ -182,7 +182,7 @@ void check(const Snapshot& snap, const CgGrid& grid, const CgFunction& f) {
 
 }  // namespace
 
-CgFields coarse_grain(const Snapshot& snap, const CgGrid& grid, const CgFunction& f) {
+CgFields coarse_grain(const Snapshot& snap, const CgGrid& grid, const CgFunction& f, std::size_t mass_sources) {
   check(snap, grid, f);
   const Frame fr(snap, grid);
   const std::vector<Segment> segs = make_segments(snap, fr);
@@ -191,7 +191,7 @@ CgFields coarse_grain(const Snapshot& snap, const CgGrid& grid, const CgFunction
   for (int k = 0; k < grid.size(); ++k) coords[k] = fr.project(grid.point(k));
   const Vec3 reach = fr.project({c, c, c});
   const auto& ps = snap.particles;
-  const int nps = int(ps.size()), nsegs = int(segs.size());
+  const int nps = int(std::min(ps.size(), mass_sources)), nsegs = int(segs.size());
 
   std::vector<std::vector<CgValues>> partial(omp_get_max_threads());
 #pragma omp parallel

@@ -18,8 +18,12 @@ namespace talus {
 // and contact is scattered only to the grid points within the cutoff (periodic images
 // included), in parallel over sources with a fixed-order reduction, so the result is
 // reproducible for a given thread count. Along periodic resolved axes every image within the
-// cutoff contributes, so any cutoff works.
-CgFields coarse_grain(const Snapshot& snap, const CgGrid& grid, const CgFunction& f);
+// cutoff contributes, so any cutoff works. Only the first `mass_sources` particle records carry
+// mass and momentum; those after them (a rank's copies of its neighbours' particles, which its
+// contacts reach: World::snapshot_piece) only end contact lines, so that the pieces of a
+// distributed system coarse-grain to fields whose sum is the whole system's (cg_fields_sum.h).
+CgFields coarse_grain(const Snapshot& snap, const CgGrid& grid, const CgFunction& f,
+                      std::size_t mass_sources = static_cast<std::size_t>(-1));
 
 // The same fields at one point by brute force over all particles and contacts (minimum image):
 // the reference for the binned coarse_grain and a way to sample fields anywhere. Throws if a

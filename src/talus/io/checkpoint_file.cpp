@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <optional>
 #include <stdexcept>
 
 #include "talus/io/atomic_file.h"
@@ -61,6 +63,23 @@ std::vector<Wall> json_walls(const nlohmann::json& j) {
   return out;
 }
 
+// ---- whole arrays, or one rank's rows of them ----
+
+using Rows = std::optional<Hdf5Reader::Rows>;  // none: the whole dataset, checked against its checksum
+
+std::vector<double> read_doubles(const Hdf5Reader& h5, const std::string& path, std::size_t columns, const Rows& rows) {
+  return rows ? h5.read_double_rows(path, columns, *rows) : h5.read_double(path, columns);
+}
+std::vector<std::uint32_t> read_u32s(const Hdf5Reader& h5, const std::string& path, std::size_t columns, const Rows& rows) {
+  return rows ? h5.read_u32_rows(path, columns, *rows) : h5.read_u32(path, columns);
+}
+std::vector<std::int32_t> read_i32s(const Hdf5Reader& h5, const std::string& path, const Rows& rows) {
+  return rows ? h5.read_i32_rows(path, 1, *rows) : h5.read_i32(path);
+}
+std::vector<std::uint16_t> read_u16s(const Hdf5Reader& h5, const std::string& path, std::size_t columns, const Rows& rows) {
+  return rows ? h5.read_u16_rows(path, columns, *rows) : h5.read_u16(path, columns);
+}
+
 // ---- contact memories and contact points ----
 
 void write_memory(Hdf5Writer& h5, const std::string& group, const ContactMemory& m) {
@@ -69,11 +88,16 @@ void write_memory(Hdf5Writer& h5, const std::string& group, const ContactMemory&
   h5.write(group + "/rolling", flat(m.rolling), 3);
 }
 
-ContactMemory read_memory(const Hdf5Reader& h5, const std::string& group) {
+ContactMemory read_memory(const Hdf5Reader& h5, const std::string& group, const Rows& rows) {
+  // A model that keeps no memory of a kind stores none: no rows to take a share of.
+  const auto column = [&](const char* name) {
+    const std::string path = group + "/" + name;
+    return vec3s(read_doubles(h5, path, 3, h5.rows(path, 3) == 0 ? Rows{} : rows));
+  };
   ContactMemory m;
-  m.spring = vec3s(h5.read_double(group + "/spring", 3));
-  m.normal_prev = vec3s(h5.read_double(group + "/normal_prev", 3));
-  m.rolling = vec3s(h5.read_double(group + "/rolling", 3));
+  m.spring = column("spring");
+  m.normal_prev = column("normal_prev");
+  m.rolling = column("rolling");
   return m;
 }
 
@@ -107,16 +131,26 @@ void write_points(Hdf5Writer& h5, const std::string& group, const std::vector<Su
   h5.write(group + "/share", share);
 }
 
-std::vector<SubContactList> read_points(const Hdf5Reader& h5, const std::string& group) {
-  const std::vector<std::uint32_t> count = h5.read_u32(group + "/count");
-  const std::vector<std::uint16_t> part = h5.read_u16(group + "/part", 2);
-  const std::vector<std::uint32_t> feature = h5.read_u32(group + "/feature");
-  const std::vector<Vec3> spring = vec3s(h5.read_double(group + "/spring", 3));
-  const std::vector<Vec3> normal_prev = vec3s(h5.read_double(group + "/normal_prev", 3));
-  const std::vector<Vec3> point = vec3s(h5.read_double(group + "/point", 3));
-  const std::vector<Vec3> force = vec3s(h5.read_double(group + "/force", 3));
-  const std::vector<double> overlap = h5.read_double(group + "/overlap");
-  const std::vector<double> share = h5.read_double(group + "/share");
+// `entries`: one rank's entries, whose points follow those of the entries before them.
+std::vector<SubContactList> read_points(const Hdf5Reader& h5, const std::string& group, const Rows& entries) {
+  Rows rows;  // of the point tables
+  std::vector<std::uint32_t> count;
+  if (entries && h5.rows(group + "/count") > 0) {
+    const std::vector<std::uint32_t> before = h5.read_u32_rows(group + "/count", 1, {0, entries->first});
+    count = h5.read_u32_rows(group + "/count", 1, *entries);
+    rows = Hdf5Reader::Rows{std::accumulate(before.begin(), before.end(), std::size_t{0}),
+                            std::accumulate(count.begin(), count.end(), std::size_t{0})};
+  } else {
+    count = h5.read_u32(group + "/count");  // whole, or none stored (spheres)
+  }
+  const std::vector<std::uint16_t> part = read_u16s(h5, group + "/part", 2, rows);
+  const std::vector<std::uint32_t> feature = read_u32s(h5, group + "/feature", 1, rows);
+  const std::vector<Vec3> spring = vec3s(read_doubles(h5, group + "/spring", 3, rows));
+  const std::vector<Vec3> normal_prev = vec3s(read_doubles(h5, group + "/normal_prev", 3, rows));
+  const std::vector<Vec3> point = vec3s(read_doubles(h5, group + "/point", 3, rows));
+  const std::vector<Vec3> force = vec3s(read_doubles(h5, group + "/force", 3, rows));
+  const std::vector<double> overlap = read_doubles(h5, group + "/overlap", 1, rows);
+  const std::vector<double> share = read_doubles(h5, group + "/share", 1, rows);
   std::size_t total = 0;
   for (std::uint32_t c : count) total += c;
   const std::size_t n = feature.size();
@@ -195,7 +229,50 @@ void write_world(Hdf5Writer& h5, const WorldState& s) {
   }
 }
 
-WorldState read_world(const Hdf5Reader& h5) {
+// The rank layout of a state joined from ranks (none in a one-rank state).
+void read_layout(const Hdf5Reader& h5, WorldState& s) {
+  if (!h5.has("world/layout/cut")) return;
+  WorldState::RankLayout& l = s.layout;
+  const std::vector<double> cut = h5.read_double("world/layout/cut");
+  std::vector<double> slabs = h5.read_double("world/layout/slabs");
+  const std::vector<std::uint64_t> shares = h5.read_u64("world/layout/shares", 3);
+  const auto damaged = [&h5] { return std::runtime_error(h5.path().string() + ": rank layout damaged"); };
+  if (!(slabs.size() == 3 || slabs.size() == 6) || !(slabs[0] == 0 || slabs[0] == 1 || slabs[0] == 2) ||
+      shares.size() != 3 * s.ranks)
+    throw damaged();
+  if (slabs.size() == 3) {  // slabs along one axis, as files written before grids of ranks
+    slabs.resize(6, 1.0);
+    slabs[3 + static_cast<int>(slabs[0])] = static_cast<double>(s.ranks);
+  }
+  std::size_t at = 0, grid = 1;
+  for (int a = 0; a < 3; ++a) {
+    const double n = slabs[3 + a];
+    if (!(n >= 1 && n == std::floor(n) && n <= static_cast<double>(s.ranks))) throw damaged();
+    grid *= static_cast<std::size_t>(n);
+    if (n == 1) continue;
+    if (at + static_cast<std::size_t>(n) + 1 > cut.size()) throw damaged();
+    l.cut[a].assign(cut.begin() + static_cast<std::ptrdiff_t>(at), cut.begin() + static_cast<std::ptrdiff_t>(at + n + 1));
+    at += static_cast<std::size_t>(n) + 1;
+  }
+  if (at != cut.size() || grid != s.ranks) throw damaged();
+  l.axis = static_cast<int>(slabs[0]);
+  l.rebalance = slabs[1] != 0;
+  l.min_width = slabs[2];
+  std::uint64_t particles = 0, pairs = 0, walls = 0;
+  for (std::size_t r = 0; r < s.ranks; ++r) {
+    l.particles.push_back(shares[3 * r]);
+    l.pair_entries.push_back(shares[3 * r + 1]);
+    l.wall_entries.push_back(shares[3 * r + 2]);
+    particles += shares[3 * r], pairs += shares[3 * r + 1], walls += shares[3 * r + 2];
+  }
+  if (particles != h5.rows("world/particles/gid") || pairs != h5.rows("contacts/pairs/gid", 2) ||
+      walls != h5.rows("contacts/walls/gid"))
+    throw std::runtime_error(h5.path().string() + ": rank layout does not add up to the stored arrays");
+}
+
+// `share_of_rank` >= 0, with a layout that fits `ranks`: only that rank's rows of the joined
+// arrays (WorldState::share_of_rank).
+WorldState read_world(const Hdf5Reader& h5, int share_of_rank = -1, int ranks = 1) {
   WorldState s;
   const std::vector<std::uint64_t> counters = h5.read_u64("world/counters");
   const std::vector<double> times = h5.read_double("world/times");
@@ -213,75 +290,50 @@ WorldState read_world(const Hdf5Reader& h5) {
   s.time_at_build = times[1];
   s.skin = times[2];
   s.gravity = {times[3], times[4], times[5]};
-
-  ParticleStore& p = s.particles;
-  p.position = vec3s(h5.read_double("world/particles/position", 3));
-  p.velocity = vec3s(h5.read_double("world/particles/velocity", 3));
-  p.angular_velocity = vec3s(h5.read_double("world/particles/angular_velocity", 3));
-  p.force = vec3s(h5.read_double("world/particles/force", 3));
-  p.torque = vec3s(h5.read_double("world/particles/torque", 3));
-  p.orientation = quats(h5.read_double("world/particles/orientation", 4));
-  p.radius = h5.read_double("world/particles/radius");
-  p.inv_mass = h5.read_double("world/particles/inv_mass");
-  p.mass = h5.read_double("world/particles/mass");
-  p.inv_inertia = vec3s(h5.read_double("world/particles/inv_inertia", 3));
-  p.species = h5.read_i32("world/particles/species");
-  p.shape = h5.read_i32("world/particles/shape");
-  p.gid = h5.read_u32("world/particles/gid");
-  p.owned = p.position.size();
-  s.position_at_build = vec3s(h5.read_double("world/position_at_build", 3));
+  read_layout(h5, s);
   s.walls = json_walls(nlohmann::json::parse(h5.read_text("world/walls")));
   s.wall_force = vec3s(h5.read_double("world/wall_force", 3));
 
-  const std::vector<std::uint32_t> pair_gid = h5.read_u32("contacts/pairs/gid", 2);
+  Rows particles, pairs, walls;  // the rows this rank reads of each kind of array
+  if (share_of_rank >= 0 && s.fits_ranks(static_cast<std::uint64_t>(ranks))) {
+    const WorldState::RankLayout& l = s.layout;
+    const auto share = [share_of_rank](const std::vector<std::uint64_t>& counts) {
+      const auto r = static_cast<std::ptrdiff_t>(share_of_rank);
+      return Hdf5Reader::Rows{std::accumulate(counts.begin(), counts.begin() + r, std::size_t{0}),
+                              static_cast<std::size_t>(counts[static_cast<std::size_t>(r)])};
+    };
+    particles = share(l.particles), pairs = share(l.pair_entries), walls = share(l.wall_entries);
+    s.share_of_rank = share_of_rank;
+  }
+  ParticleStore& p = s.particles;
+  p.position = vec3s(read_doubles(h5, "world/particles/position", 3, particles));
+  p.velocity = vec3s(read_doubles(h5, "world/particles/velocity", 3, particles));
+  p.angular_velocity = vec3s(read_doubles(h5, "world/particles/angular_velocity", 3, particles));
+  p.force = vec3s(read_doubles(h5, "world/particles/force", 3, particles));
+  p.torque = vec3s(read_doubles(h5, "world/particles/torque", 3, particles));
+  p.orientation = quats(read_doubles(h5, "world/particles/orientation", 4, particles));
+  p.radius = read_doubles(h5, "world/particles/radius", 1, particles);
+  p.inv_mass = read_doubles(h5, "world/particles/inv_mass", 1, particles);
+  p.mass = read_doubles(h5, "world/particles/mass", 1, particles);
+  p.inv_inertia = vec3s(read_doubles(h5, "world/particles/inv_inertia", 3, particles));
+  p.species = read_i32s(h5, "world/particles/species", particles);
+  p.shape = read_i32s(h5, "world/particles/shape", particles);
+  p.gid = read_u32s(h5, "world/particles/gid", 1, particles);
+  p.owned = p.position.size();
+  s.position_at_build = vec3s(read_doubles(h5, "world/position_at_build", 3, particles));
+
+  const std::vector<std::uint32_t> pair_gid = read_u32s(h5, "contacts/pairs/gid", 2, pairs);
   for (std::size_t e = 0; 2 * e < pair_gid.size(); ++e) {
     s.pair_gid_i.push_back(pair_gid[2 * e]);
     s.pair_gid_j.push_back(pair_gid[2 * e + 1]);
   }
-  s.pair_memory = read_memory(h5, "contacts/pairs");
-  s.pair_sub = read_points(h5, "contacts/pairs/points");
-  s.wall_gid = h5.read_u32("contacts/walls/gid");
-  s.wall_index = h5.read_i32("contacts/walls/wall");
-  s.wall_entry_force = vec3s(h5.read_double("contacts/walls/force", 3));
-  s.wall_memory = read_memory(h5, "contacts/walls");
-  s.wall_sub = read_points(h5, "contacts/walls/points");
-  if (h5.has("world/layout/cut")) {
-    WorldState::RankLayout& l = s.layout;
-    const std::vector<double> cut = h5.read_double("world/layout/cut");
-    std::vector<double> slabs = h5.read_double("world/layout/slabs");
-    const std::vector<std::uint64_t> shares = h5.read_u64("world/layout/shares", 3);
-    const auto damaged = [&h5] { return std::runtime_error(h5.path().string() + ": rank layout damaged"); };
-    if (!(slabs.size() == 3 || slabs.size() == 6) || !(slabs[0] == 0 || slabs[0] == 1 || slabs[0] == 2) ||
-        shares.size() != 3 * s.ranks)
-      throw damaged();
-    if (slabs.size() == 3) {  // slabs along one axis, as files written before grids of ranks
-      slabs.resize(6, 1.0);
-      slabs[3 + static_cast<int>(slabs[0])] = static_cast<double>(s.ranks);
-    }
-    std::size_t at = 0, grid = 1;
-    for (int a = 0; a < 3; ++a) {
-      const double n = slabs[3 + a];
-      if (!(n >= 1 && n == std::floor(n) && n <= static_cast<double>(s.ranks))) throw damaged();
-      grid *= static_cast<std::size_t>(n);
-      if (n == 1) continue;
-      if (at + static_cast<std::size_t>(n) + 1 > cut.size()) throw damaged();
-      l.cut[a].assign(cut.begin() + static_cast<std::ptrdiff_t>(at), cut.begin() + static_cast<std::ptrdiff_t>(at + n + 1));
-      at += static_cast<std::size_t>(n) + 1;
-    }
-    if (at != cut.size() || grid != s.ranks) throw damaged();
-    l.axis = static_cast<int>(slabs[0]);
-    l.rebalance = slabs[1] != 0;
-    l.min_width = slabs[2];
-    std::uint64_t particles = 0, pairs = 0, walls = 0;
-    for (std::size_t r = 0; r < s.ranks; ++r) {
-      l.particles.push_back(shares[3 * r]);
-      l.pair_entries.push_back(shares[3 * r + 1]);
-      l.wall_entries.push_back(shares[3 * r + 2]);
-      particles += shares[3 * r], pairs += shares[3 * r + 1], walls += shares[3 * r + 2];
-    }
-    if (particles != s.particles.owned || pairs != s.pair_gid_i.size() || walls != s.wall_gid.size())
-      throw std::runtime_error(h5.path().string() + ": rank layout does not add up to the stored arrays");
-  }
+  s.pair_memory = read_memory(h5, "contacts/pairs", pairs);
+  s.pair_sub = read_points(h5, "contacts/pairs/points", pairs);
+  s.wall_gid = read_u32s(h5, "contacts/walls/gid", 1, walls);
+  s.wall_index = read_i32s(h5, "contacts/walls/wall", walls);
+  s.wall_entry_force = vec3s(read_doubles(h5, "contacts/walls/force", 3, walls));
+  s.wall_memory = read_memory(h5, "contacts/walls", walls);
+  s.wall_sub = read_points(h5, "contacts/walls/points", walls);
   return s;
 }
 
@@ -341,15 +393,17 @@ auto read_from(const std::filesystem::path& path, Read read) {
 
 }  // namespace
 
-Checkpoint read_checkpoint(const std::filesystem::path& path) {
-  return read_from(path, [&path](const Hdf5Reader& h5) {
+Checkpoint read_checkpoint(const std::filesystem::path& path) { return read_checkpoint_share(path, -1, 1); }
+
+Checkpoint read_checkpoint_share(const std::filesystem::path& path, int rank, int ranks) {
+  return read_from(path, [&](const Hdf5Reader& h5) {
     Checkpoint c;
     c.talus_version = checked_writer(h5, path);
     c.scenario_toml = h5.read_text("scenario");
     c.run = nlohmann::json::parse(h5.read_text("run"));
     c.timeseries_columns = nlohmann::json::parse(h5.read_text("timeseries_columns")).get<std::vector<std::string>>();
     c.timeseries = h5.read_double("timeseries", std::max<std::size_t>(1, c.timeseries_columns.size()));
-    c.world = read_world(h5);
+    c.world = read_world(h5, rank, ranks);
     return c;
   });
 }

@@ -49,6 +49,10 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& check
 // Throws io::InputError "PATH: what is wrong" for a missing, corrupt or foreign file, or one of
 // another format version.
 Checkpoint read_checkpoint(const std::filesystem::path& path);
+// Rank `rank` of a run on `ranks` ranks: of a state gathered from as many ranks (its layout
+// fits them), only this rank's share of the arrays (WorldState::share_of_rank), and unchecked
+// against the checksums (rank 0 reads the file whole and checks it); otherwise the whole state.
+Checkpoint read_checkpoint_share(const std::filesystem::path& path, int rank, int ranks);
 // Only the scenario text stored in it (what `talus resume` needs before the run reads the state).
 std::string read_checkpoint_scenario(const std::filesystem::path& path);
 

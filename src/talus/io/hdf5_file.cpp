@@ -225,6 +225,47 @@ std::vector<std::uint16_t> Hdf5Reader::read_u16(const std::string& path, std::si
   return out;
 }
 
+void Hdf5Reader::read_rows_raw(const std::string& path, void* out, std::size_t element_bytes, std::size_t columns,
+                               Rows rows, std::int64_t memory_type) const {
+  const std::size_t total = count(path, columns) / columns;
+  if (rows.first + rows.count > total)
+    fail("dataset " + path + " has " + std::to_string(total) + " rows, not the " +
+         std::to_string(rows.first + rows.count) + " a share needs");
+  Handle set(H5Dopen2(file_, path.c_str(), H5P_DEFAULT), H5Dclose);
+  Handle type(H5Dget_type(set.get()), H5Tclose);
+  if (H5Tget_class(type.get()) != H5Tget_class(memory_type) || H5Tget_size(type.get()) != element_bytes)
+    fail("dataset " + path + " has the wrong element type");
+  if (rows.count == 0) return;
+  Handle file_space(H5Dget_space(set.get()), H5Sclose);
+  const int dims = columns > 1 ? 2 : 1;
+  const hsize_t start[2] = {rows.first, 0}, block[2] = {rows.count, columns};
+  Handle memory_space(H5Screate_simple(dims, block, nullptr), H5Sclose);
+  if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, block, nullptr) < 0 ||
+      H5Dread(set.get(), memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, out) < 0)
+    fail("cannot read rows of dataset " + path + " (corrupt file)");
+}
+
+std::vector<double> Hdf5Reader::read_double_rows(const std::string& path, std::size_t columns, Rows rows) const {
+  std::vector<double> out(rows.count * columns);
+  read_rows_raw(path, out.data(), sizeof(double), columns, rows, H5T_NATIVE_DOUBLE);
+  return out;
+}
+std::vector<std::uint32_t> Hdf5Reader::read_u32_rows(const std::string& path, std::size_t columns, Rows rows) const {
+  std::vector<std::uint32_t> out(rows.count * columns);
+  read_rows_raw(path, out.data(), sizeof(std::uint32_t), columns, rows, H5T_NATIVE_UINT32);
+  return out;
+}
+std::vector<std::int32_t> Hdf5Reader::read_i32_rows(const std::string& path, std::size_t columns, Rows rows) const {
+  std::vector<std::int32_t> out(rows.count * columns);
+  read_rows_raw(path, out.data(), sizeof(std::int32_t), columns, rows, H5T_NATIVE_INT32);
+  return out;
+}
+std::vector<std::uint16_t> Hdf5Reader::read_u16_rows(const std::string& path, std::size_t columns, Rows rows) const {
+  std::vector<std::uint16_t> out(rows.count * columns);
+  read_rows_raw(path, out.data(), sizeof(std::uint16_t), columns, rows, H5T_NATIVE_UINT16);
+  return out;
+}
+
 std::string Hdf5Reader::read_text(const std::string& path) const {
   if (!has(path)) fail("missing dataset " + path);
   Handle set(H5Dopen2(file_, path.c_str(), H5P_DEFAULT), H5Dclose);

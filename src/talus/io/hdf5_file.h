@@ -54,6 +54,8 @@ class Hdf5Reader {
   Hdf5Reader& operator=(const Hdf5Reader&) = delete;
 
   bool has(const std::string& path) const;
+  // Rows of a dataset of `columns` columns (throws if it has another shape).
+  std::size_t rows(const std::string& path, std::size_t columns = 1) const { return count(path, columns) / columns; }
   // Reads a dataset written with the same element type and `columns`; checks its checksum.
   std::vector<double> read_double(const std::string& path, std::size_t columns = 1) const;
   std::vector<std::uint64_t> read_u64(const std::string& path, std::size_t columns = 1) const;
@@ -61,6 +63,16 @@ class Hdf5Reader {
   std::vector<std::int32_t> read_i32(const std::string& path, std::size_t columns = 1) const;
   std::vector<std::uint16_t> read_u16(const std::string& path, std::size_t columns = 1) const;
   std::string read_text(const std::string& path) const;
+  // Rows [first, first + count) of a dataset of `columns` columns: one rank's share of a state
+  // joined from ranks. The checksum covers the whole dataset, so a share is not checked; the
+  // rank that reads the file whole checks it.
+  struct Rows {
+    std::size_t first = 0, count = 0;
+  };
+  std::vector<double> read_double_rows(const std::string& path, std::size_t columns, Rows rows) const;
+  std::vector<std::uint32_t> read_u32_rows(const std::string& path, std::size_t columns, Rows rows) const;
+  std::vector<std::int32_t> read_i32_rows(const std::string& path, std::size_t columns, Rows rows) const;
+  std::vector<std::uint16_t> read_u16_rows(const std::string& path, std::size_t columns, Rows rows) const;
   bool has_attribute(const std::string& name) const;
   std::string string_attribute(const std::string& name) const;
   std::int64_t int_attribute(const std::string& name) const;
@@ -70,6 +82,8 @@ class Hdf5Reader {
  private:
   void read_raw(const std::string& path, void* out, std::size_t element_bytes, std::size_t count,
                 std::int64_t memory_type) const;
+  void read_rows_raw(const std::string& path, void* out, std::size_t element_bytes, std::size_t columns, Rows rows,
+                     std::int64_t memory_type) const;
   std::size_t count(const std::string& path, std::size_t columns) const;
   [[noreturn]] void fail(const std::string& what) const;
 

@@ -38,8 +38,6 @@ class VtkOutput {
   // 0 writes the .pvtu files that join them, the walls, and the series.
   void write_frame_piece(const Snapshot& piece, std::size_t owned, const std::vector<Wall>& walls, int rank,
                          int ranks, const std::function<void()>& all_written);
-  // A frame written whole by another rank (a run not yet spread): only the count moves on.
-  void skip_frame() { ++frames_; }
   // A resumed run: frames go on from times.size(); the series list the earlier frames whose
   // files are in the directory (all of them when the run resumes in its own folder).
   void resume(const std::vector<double>& times);

@@ -1,5 +1,7 @@
 #include "talus/parallel/migration.h"
 
+#include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
 
@@ -7,6 +9,7 @@ namespace talus {
 
 namespace {
 constexpr int kMigrateTag = 160;  // past the halo's (halo_exchange.cpp)
+constexpr int kScatterTag = 190;  // past the migration's
 
 struct ParticleRow {
   Vec3 position, velocity, angular_velocity, force, torque;
@@ -221,6 +224,55 @@ MigrationCount migrate(ParticleStore& p, const RankGrid& ranks, CarriedContacts&
   if (with_points) record_points.resize(n);
   group_records(records, layout, carried, with_points ? &record_points : nullptr);
   return count;
+}
+
+std::size_t scatter_from_first_rank(ParticleStore& p, const RankGrid& ranks, const Domain& domain) {
+  // Messages of at most this many particles (about 150 MB): MPI counts bytes in an int.
+  constexpr std::size_t kRowsPerMessage = std::size_t{1} << 20;
+  const Communicator& comm = *ranks.comm;
+  if (comm.rank() != 0) {
+    if (p.owned != 0) throw std::logic_error("scatter_from_first_rank: a rank other than the first holds particles");
+    const std::vector<std::byte> head = comm.exchange({}, -1, 0, kScatterTag);
+    const std::uint64_t n = ByteReader(head).get<std::uint64_t>();
+    p.resize(n);
+    p.owned = n;
+    for (std::size_t at = 0; at < n; at += kRowsPerMessage) {
+      const std::vector<std::byte> in = comm.exchange({}, -1, 0, kScatterTag);
+      ByteReader r(in);
+      for (std::size_t i = at; i < std::min<std::size_t>(n, at + kRowsPerMessage); ++i) put_row(p, i, r.get<ParticleRow>());
+    }
+    return 0;
+  }
+  std::vector<std::vector<std::uint32_t>> of_rank(static_cast<std::size_t>(comm.size()));
+  for (std::size_t i = 0; i < p.owned; ++i) {
+    const Vec3 x = domain.wrap(p.position[i]);
+    std::array<int, 3> index;
+    for (int a = 0; a < 3; ++a) index[a] = ranks.axes[a].owner_of(x[a]);
+    of_rank[static_cast<std::size_t>(ranks.rank_at(index))].push_back(static_cast<std::uint32_t>(i));
+  }
+  std::size_t sent = 0;
+  for (int to = 1; to < comm.size(); ++to) {
+    const std::vector<std::uint32_t>& rows = of_rank[static_cast<std::size_t>(to)];
+    std::vector<std::byte> out;
+    ByteWriter(out).put(static_cast<std::uint64_t>(rows.size()));
+    comm.exchange(out, to, -1, kScatterTag);
+    for (std::size_t at = 0; at < rows.size(); at += kRowsPerMessage) {
+      out.clear();
+      ByteWriter w(out);
+      for (std::size_t k = at; k < std::min(rows.size(), at + kRowsPerMessage); ++k) w.put(row_of(p, rows[k]));
+      comm.exchange(out, to, -1, kScatterTag);
+    }
+    sent += rows.size();
+  }
+  // Rank 0 keeps its own share, in the order it had them.
+  std::vector<std::uint32_t> order = std::move(of_rank[0]);
+  const std::size_t mine = order.size();
+  for (int to = 1; to < comm.size(); ++to)
+    order.insert(order.end(), of_rank[static_cast<std::size_t>(to)].begin(), of_rank[static_cast<std::size_t>(to)].end());
+  p.permute_owned(order);
+  p.owned = mine;
+  p.resize(mine);
+  return sent;
 }
 
 }  // namespace talus

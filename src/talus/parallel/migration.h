@@ -40,4 +40,11 @@ MigrationCount migrate(ParticleStore& particles, const RankGrid& ranks, CarriedC
                        MigrationScratch& scratch,
                        std::vector<SubContactList>* wall_points = nullptr);
 
+// The start of a run built on the first rank alone (WorldSettings::particles_on_first_rank):
+// rank 0 holds every particle, the others none; each particle goes straight to the rank whose
+// box holds its position wrapped into `domain`, in the order rank 0 holds them. A world that
+// has not stepped has no contact memory to send along. Collective; returns the particles rank
+// 0 sent.
+std::size_t scatter_from_first_rank(ParticleStore& particles, const RankGrid& ranks, const Domain& domain);
+
 }  // namespace talus

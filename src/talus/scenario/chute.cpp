@@ -94,6 +94,7 @@ std::unique_ptr<World> make_chute_world(const ChuteSetup& s) {
   ws.domain.periodic[0] = ws.domain.periodic[1] = true;
   ws.gravity = {std::sin(theta), 0, -std::cos(theta)};
   ws.tangential_model = s.model;
+  ws.particles_on_first_rank = s.particles_on_first_rank;
   const double mass = s.density * std::numbers::pi / 6 * s.diameter * s.diameter * s.diameter;
   const double m_ij = 0.5 * mass;
   ws.time_step = s.time_step > 0 ? s.time_step

@@ -29,6 +29,7 @@ struct ChuteSetup {
   TangentialModel model = TangentialModel::elastic_spring;
   double time_step = 0;         ///< 0: t_c / 50 (Weinhart et al. 2012, Sect. 2)
   std::uint64_t seed = 1;
+  bool particles_on_first_rank = false;  ///< WorldSettings::particles_on_first_rank
 };
 
 // Weinhart et al. 2012, Sect. 5 parameters: k_n = 2e5, gamma_n = 50 (per unit reduced mass, the

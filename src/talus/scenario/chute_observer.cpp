@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "talus/analysis/cg_fields_json.h"
+#include "talus/analysis/cg_fields_sum.h"
 #include "talus/analysis/cg_time_average.h"
 #include "talus/analysis/chute_depth_summary.h"
 #include "talus/analysis/chute_series.h"
@@ -21,6 +22,34 @@
 
 namespace talus {
 namespace {
+
+// One state of the flow to coarse-grain: the whole system, or (when the run is spread over
+// ranks) this rank's piece of it, whose fields and sums the ranks add up to the whole system's,
+// so that no rank holds more than its share.
+struct FlowSample {
+  Snapshot snapshot;
+  std::size_t owned = 0;                // the records that are this sample's particles
+  const Communicator* ranks = nullptr;  // the ranks whose pieces add up; nullptr: whole
+
+  static FlowSample of(const World& world) {
+    World::SnapshotPiece piece = world.snapshot_piece();
+    return {std::move(piece.snapshot), piece.owned, world.distributed() ? &world.communicator() : nullptr};
+  }
+  static FlowSample whole(Snapshot snap) {
+    const std::size_t n = snap.particles.size();
+    return {std::move(snap), n, nullptr};
+  }
+  double sum(double x) const { return ranks ? ranks->sum(x) : x; }
+  double flowing_mass() const {
+    double mass = 0;
+    for (std::size_t i = 0; i < owned; ++i)
+      if (!snapshot.particles[i].fixed) mass += snapshot.particles[i].mass;
+    return sum(mass);
+  }
+  double area() const {
+    return (snapshot.domain_max.x - snapshot.domain_min.x) * (snapshot.domain_max.y - snapshot.domain_min.y);
+  }
+};
 
 struct WidthAverage {
   CgFunction function;
@@ -59,7 +88,7 @@ class ChuteObserver final : public RunObserver {
     const double half_step = 0.5 * world.settings().time_step;
     if (world.time() < next_snapshot_ - half_step || world.time() > c_.end + half_step) return;
     while (next_snapshot_ <= world.time() + half_step) next_snapshot_ += c_.interval;
-    add_snapshot(world.snapshot());
+    add_sample(FlowSample::of(world));
   }
 
   bool output(World& world, const Diagnostics& d) override {
@@ -79,14 +108,14 @@ class ChuteObserver final : public RunObserver {
                             {"state_window", {flow.window_start, flow.window_end}}};
     chute["arrest_time"] = flow.arrest_time ? nlohmann::json(*flow.arrest_time) : nlohmann::json(nullptr);
 
-    const Snapshot snap = world.snapshot();
+    const FlowSample last = FlowSample::of(world);
     // A run that ended before its window (an arrested pile stopped early) is measured on its
     // final state, so the h_stop search still knows the pile's height h.
     if (!widths_.empty() && widths_.front().average.count() == 0) {
-      add_snapshot(snap);
+      add_sample(last);
       chute["final_state_only"] = true;
     }
-    report(flow.state, snap, out, summary, chute);
+    report(flow.state, last, out, summary, chute);
   }
 
   // Coarse-grains the run again from its saved snapshots (run.snapshot_interval) inside the
@@ -101,17 +130,17 @@ class ChuteObserver final : public RunObserver {
     for (WidthAverage& w : widths_) w.average = {};
     series_ = ChuteSeries(c_.series_interval);
     cg_seconds_ = 0;
-    Snapshot last;
+    FlowSample last;
     const double tolerance = 0.5 * c_.time_step;
     for (const auto& file : files) {
-      Snapshot snap = io::read_snapshot_file(file);
-      if (snap.time >= c_.start - tolerance && snap.time <= c_.end + tolerance) add_snapshot(snap);
-      last = std::move(snap);
+      FlowSample sample = FlowSample::whole(io::read_snapshot_file(file));
+      if (sample.snapshot.time >= c_.start - tolerance && sample.snapshot.time <= c_.end + tolerance) add_sample(sample);
+      last = std::move(sample);
     }
     nlohmann::json chute = summary["chute"];
     chute.erase("final_state_only");
     if (widths_.front().average.count() == 0) {  // as in finish(): fall back on the final state
-      add_snapshot(last);
+      add_sample(last);
       chute["final_state_only"] = true;
     }
     const FlowState energy_state = flow_state_from_string(chute.at("energy_state").get<std::string>());
@@ -153,25 +182,26 @@ class ChuteObserver final : public RunObserver {
 
  private:
   // Coarse-grains one state into every width's average (Eq. 43).
-  void add_snapshot(const Snapshot& snap) {
+  void add_sample(const FlowSample& sample) {
     const auto t0 = std::chrono::steady_clock::now();
+    const Snapshot& snap = sample.snapshot;
     const CgGrid grid = CgGrid::depth(c_.z_min, c_.z_max, c_.points);
     CgFields first;
     for (WidthAverage& w : widths_) {
-      CgFields fields = coarse_grain(snap, grid, w.function);
+      CgFields fields = coarse_grain(snap, grid, w.function, sample.owned);
+      if (sample.ranks) sum_over_ranks(fields, *sample.ranks);
       w.average.add(fields);
       if (&w == &widths_.front()) first = std::move(fields);
     }
     // Downslope momentum of the flow, for the mean acceleration over the window.
-    double px = 0, mass = 0;
-    for (const ParticleRecord& p : snap.particles)
-      if (!p.fixed) {
-        px += p.mass * p.velocity.x;
-        mass += p.mass;
-      }
+    double px = 0;
+    for (std::size_t i = 0; i < sample.owned; ++i)
+      if (!snap.particles[i].fixed) px += snap.particles[i].mass * snap.particles[i].velocity.x;
+    px = sample.sum(px);
+    const double mass = sample.flowing_mass();
     try {
-      const double area = (snap.domain_max.x - snap.domain_min.x) * (snap.domain_max.y - snap.domain_min.y);
-      series_.add(snap.time, summarize_chute_profile(first, snap.gravity, c_.particle_density, c_.diameter, mass / area));
+      series_.add(snap.time, summarize_chute_profile(first, snap.gravity, c_.particle_density, c_.diameter,
+                                                     mass / sample.area()));
     } catch (const std::invalid_argument&) {
       // A snapshot without a flow surface on the grid (a grain flying off) has no depth averages.
     }
@@ -185,14 +215,13 @@ class ChuteObserver final : public RunObserver {
   }
 
   // The averaged profiles into the results: chute_profile*.csv, the closure quantities in
-  // `summary`, the balance checks in `chute` (then summary["chute"]). `last` is the final state,
-  // for the flowing mass. The energy state is refined by the layering the profile shows.
-  void report(FlowState state, const Snapshot& last, const std::filesystem::path& out, nlohmann::json& summary,
+  // `summary`, the balance checks in `chute` (then summary["chute"]). `sample` is the final
+  // state, for the flowing mass. The energy state is refined by the layering the profile shows.
+  void report(FlowState state, const FlowSample& sample, const std::filesystem::path& out, nlohmann::json& summary,
               nlohmann::json& chute) const {
-    double mass = 0;
-    for (const ParticleRecord& p : last.particles)
-      if (!p.fixed) mass += p.mass;
-    const double area = (last.domain_max.x - last.domain_min.x) * (last.domain_max.y - last.domain_min.y);
+    const Snapshot& last = sample.snapshot;
+    const double mass = sample.flowing_mass();
+    const double area = sample.area();
     chute["flowing_mass_per_area"] = mass / area;
     const int count = widths_.empty() ? 0 : widths_.front().average.count();
     chute["snapshots"] = count;

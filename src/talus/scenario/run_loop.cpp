@@ -123,10 +123,8 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
       const Communicator& ranks = world.communicator();
       vtk->write_frame_piece(piece.snapshot, piece.owned, world.walls(), ranks.rank(), ranks.size(),
                              [&] { ranks.barrier(); });
-    } else if (comm.rank() == 0) {
-      vtk->write_frame(world.snapshot(), world.walls());
     } else {
-      vtk->skip_frame();  // the whole system, before it is spread: rank 0 writes it
+      vtk->write_frame(world.snapshot(), world.walls());
     }
     loop.vtk_times.push_back(world.time());
     loop.next_frame += run.vtk_interval;
@@ -168,7 +166,13 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
     if (vtk) vtk->resume(loop.vtk_times);
     if (opt.checkpoint_interval || !std::isfinite(loop.next_checkpoint))  // a new interval starts now
       loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
-  } else {
+  }
+  // Spread before anything looks at the system: a scenario built under mpirun is on rank 0 alone
+  // until then (ScenarioLimits::particles_on_first_rank). A restart on the same ranks is spread
+  // already.
+  if (spread && !world.distributed()) world.distribute(comm, run.processors);
+  if (spread) world.balance_ranks_by(run.balance);
+  if (!restarted) {
     blow_up = guard.check(world);  // set up broken (say, a particle launched at 1e200 m/s): no step runs
     if (!blow_up) record_row(world.diagnostics());
     loop.next_frame = world.time();
@@ -178,8 +182,6 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
     loop.next_output = world.time() + run.output_interval;
     loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
-  if (spread && !world.distributed()) world.distribute(comm, run.processors);  // a restart on the same ranks is spread already
-  if (spread) world.balance_ranks_by(run.balance);
   const std::uint64_t first_step = world.step_count();
   const double dt = world.settings().time_step;
   // Each batch ends at the first step where something below is due, as the loop's own tests

@@ -229,6 +229,7 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
 
   WorldSettings ws;
   ws.tangential_model = read_tangential_model(f);
+  ws.particles_on_first_rank = limits.particles_on_first_rank;
 
   // Species.
   std::vector<SpeciesInfo> species;
@@ -277,6 +278,7 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
         f.get_or<double>("chute.initial_volume_fraction", chute_setup.initial_volume_fraction, io::in_range(0.1, 0.35));
     chute_setup.seed = run.seed;
     chute_setup.model = ws.tangential_model;
+    chute_setup.particles_on_first_rank = ws.particles_on_first_rank;
     // Checked before the rough base settles in a box of the same size (make_rough_base), whose
     // World would refuse it: the periodic box must hold two interaction ranges.
     const double widest = std::max(chute_setup.diameter, chute_setup.base_diameter);
@@ -490,7 +492,7 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
     }
     sc.pours.emplace_back(p, run.seed + 1000 + k);
   }
-  if (world->particles().owned == 0) {
+  if (world->particles_added() == 0) {
     if (sc.pours.empty()) f.fail("particles", "the scenario has no particles (add [[particles]], [[insert]] or [[pour]])");
     sc.pours.front().pour_due(*world);
   }
@@ -511,9 +513,9 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
   f.check_no_unknown_keys();
   for (const auto& s : species) sc.species.push_back(s.name);
   sc.wall_materials = materials;
-  sc.derived["particles"] = world->particles().owned;
+  sc.derived["particles"] = world->particles_added();
   sc.derived["walls"] = world->walls().size();
-  sc.derived["expected_memory_bytes"] = world->particles().owned * 400;  // measured engine footprint per particle, with margin
+  sc.derived["expected_memory_bytes"] = world->particles_added() * 400;  // measured engine footprint per particle, with margin
   sc.world = std::move(world);
   return sc;
 }

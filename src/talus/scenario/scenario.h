@@ -48,6 +48,10 @@ struct Scenario {
 // so that every input it tries builds in a moment.
 struct ScenarioLimits {
   std::size_t max_particles = 100'000'000;  ///< explicit, inserted, poured, filled and chute particles in all
+  // Under mpirun: rank 0 alone keeps the particles it builds, and World::distribute hands them
+  // out (WorldSettings::particles_on_first_rank). The checks that read the particles are rank
+  // 0's, whose error ends the run on every rank.
+  bool particles_on_first_rank = false;
 };
 
 // Reads every section, validates it (errors name file, line and key) and builds the World.

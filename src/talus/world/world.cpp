@@ -35,6 +35,10 @@ std::uint32_t World::add_particle(const ParticleInit& init) {
   if (!(init.mass > 0)) throw std::invalid_argument("particle mass must be positive");
   if (next_gid_ == std::numeric_limits<std::uint32_t>::max())  // the id GidIndex keeps for empty slots
     throw std::length_error("more than 2^32 - 1 particles added to one run");
+  if (settings_.particles_on_first_rank && Communicator::world().rank() != 0) {
+    skip_global_id();  // rank 0 keeps it, and hands it over in distribute()
+    return next_gid_ - 1;
+  }
   particles_.drop_ghosts();
   const std::size_t n = particles_.owned;
   particles_.resize(n + 1);
@@ -54,6 +58,10 @@ std::uint32_t World::add_particle(const ParticleInit& init) {
   particles_.gid[n] = next_gid_;
   invalidate();
   return next_gid_++;
+}
+
+void World::reserve_particles(std::size_t n) {
+  if (!settings_.particles_on_first_rank || Communicator::world().rank() == 0) particles_.reserve(n);
 }
 
 std::uint32_t World::add_sphere(const Vec3& position, double radius, double density, int species, bool fixed) {

@@ -42,6 +42,11 @@ struct WorldSettings {
   // inside the force pass, as soon as its force is complete; false runs them as separate passes
   // over all particles, the reference the fused form must equal to the bit.
   bool fused_step_end = true;
+  // A run under mpirun builds its particles on rank 0 alone: every rank reads the scenario and
+  // draws the same random placements, but only rank 0 keeps the particles (the others count
+  // their global ids), and distribute() sends each rank its share. No rank but the first ever
+  // holds more than its share of the system.
+  bool particles_on_first_rank = false;
 };
 
 struct ParticleInit {
@@ -84,7 +89,7 @@ class World {
   std::uint32_t add_sphere(const Vec3& position, double radius, double density, int species, bool fixed = false);
   int add_wall(const Wall& wall);
   // Room for n particles, so that adding them one by one does not double every array.
-  void reserve_particles(std::size_t n) { particles_.reserve(n); }
+  void reserve_particles(std::size_t n);
   // Registers a rigid shape (parts in the body's principal frame); particles refer to it by index.
   // Index 0 is the sphere, whose radius each particle carries.
   int add_shape(const CompositeShape& shape);
@@ -152,8 +157,9 @@ class World {
   // Spreads the world over the ranks of `comm` on a grid of `counts` ranks along x, y and z
   // (rank_grid.h; zeros: RankGrid::choose_counts picks them), each rank keeping the particles
   // of its box; `slab_axis`, a cut axis, is the pair list's (-1: the one its slabs would hold
-  // most evenly, if cut). Every rank must hold the same whole system when it calls this. One
-  // rank along a periodic axis makes its own images there.
+  // most evenly, if cut). Every rank must hold the same whole system when it calls this, or,
+  // for a world built with WorldSettings::particles_on_first_rank, rank 0 the whole system and
+  // the others none. One rank along a periodic axis makes its own images there.
   void distribute(const Communicator& comm, RankCounts counts = {0, 0, 0}, int slab_axis = -1);
   // The same with the cuts given (each slab at least an interaction range wide).
   void distribute(const RankGrid& ranks);
@@ -177,6 +183,8 @@ class World {
     ++next_gid_;
     invalidate();
   }
+  // Particles added since the start, on every rank (the next global id).
+  std::uint32_t particles_added() const { return next_gid_; }
   // The lists are built anew before the next step (on every rank of a distributed world, which
   // must all ask: particles left some rank).
   void rebuild_before_next_step() { invalidate(); }
@@ -220,6 +228,8 @@ class World {
   std::size_t integration_cost() const;  ///< per particle, in sphere updates (velocity_verlet.h)
   double interaction_range() const;
   double particle_skin(double largest_radius) const;  ///< m, the list's skin
+  // The grid distribute() cuts the system this rank holds whole into.
+  RankGrid grid_for_whole_system(const Communicator& comm, RankCounts counts, int slab_axis) const;
   Domain sub_domain_grid() const;         ///< what this rank's grid covers in a distributed world
   Diagnostics local_diagnostics() const;  ///< of this rank's particles and the pairs it lists
   // How a snapshot of this rank names the partners of its contacts: by record (one rank), by

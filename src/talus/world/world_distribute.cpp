@@ -4,13 +4,66 @@
 
 #include "talus/world/world.h"
 
+#include "talus/parallel/migration.h"
+
 namespace talus {
 
 double World::particle_skin(double largest_radius) const {
   return settings_.skin > 0 ? settings_.skin : 0.3 * largest_radius;
 }
 
+namespace {
+
+// Rank 0's grid on every rank: its cuts, which of them follow the particles, its slab axis.
+RankGrid grid_of_first_rank(const RankGrid& mine, const Communicator& comm, const Domain& domain) {
+  std::vector<std::byte> bytes;
+  if (comm.rank() == 0) {
+    ByteWriter w(bytes);
+    w.put(mine.slab_axis);
+    for (const SlabDecomposition& axis : mine.axes) {
+      w.put(axis.min_width);
+      w.put(axis.rebalance);
+      w.put(static_cast<std::uint64_t>(axis.cut.size()));
+      for (const double c : axis.cut) w.put(c);
+    }
+  }
+  const std::vector<std::byte> all = comm.all_gather(bytes);
+  ByteReader r(all);
+  const int slab_axis = r.get<int>();
+  std::array<std::vector<double>, 3> cut;
+  std::array<bool, 3> rebalance{};
+  double min_width = 0;
+  for (int a = 0; a < 3; ++a) {
+    min_width = r.get<double>();
+    rebalance[a] = r.get<bool>();
+    cut[a].resize(r.get<std::uint64_t>());
+    for (double& c : cut[a]) c = r.get<double>();
+  }
+  RankGrid grid = RankGrid::with_cuts(comm, domain, std::move(cut), min_width, slab_axis);
+  for (int a = 0; a < 3; ++a) grid.axes[a].rebalance = rebalance[a];
+  return grid;
+}
+
+}  // namespace
+
 void World::distribute(const Communicator& comm, RankCounts counts, int slab_axis) {
+  // A world built on rank 0 alone has the whole system there: rank 0 chooses the grid and
+  // sends each rank its particles.
+  const bool on_first_rank = settings_.particles_on_first_rank && comm.distributed();
+  if (on_first_rank && ready_) throw std::logic_error("World::distribute: a world built on rank 0 has not stepped");
+  settings_.particles_on_first_rank = false;  // from now on each rank adds what it owns
+  RankGrid grid;
+  if (!on_first_rank || comm.rank() == 0) grid = grid_for_whole_system(comm, counts, slab_axis);
+  if (!on_first_rank) {
+    distribute(grid);
+    return;
+  }
+  spread_.ranks = grid_of_first_rank(grid, comm, settings_.domain);
+  spread_.migrated += scatter_from_first_rank(particles_, spread_.ranks, settings_.domain);
+  invalidate();
+}
+
+RankGrid World::grid_for_whole_system(const Communicator& comm, RankCounts counts, int slab_axis) const {
   const ParticleStore& p = particles_;
   const Domain& domain = settings_.domain;
   std::vector<Vec3> position(p.position.begin(), p.position.begin() + p.owned);
@@ -35,7 +88,7 @@ void World::distribute(const Communicator& comm, RankCounts counts, int slab_axi
     counts = RankGrid::choose_counts(comm.size(), extent, {domain.periodic[0], domain.periodic[1], domain.periodic[2]},
                                      range, slab_axis);
   }
-  distribute(RankGrid::balanced(comm, domain, counts, position, range, slab_axis));
+  return RankGrid::balanced(comm, domain, counts, position, range, slab_axis);
 }
 
 bool World::owns(const Vec3& position) const {

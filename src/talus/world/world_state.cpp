@@ -43,11 +43,11 @@ void check_particles(const ParticleStore& p, int species, std::size_t shapes, st
     require(p.gid[i] < next_gid, "particle global id beyond the next free id");
   }
   // Memories find their particles by global id: two particles with one id would swap them.
-  std::vector<char> seen(next_gid, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    require(!seen[p.gid[i]], "two particles share the global id " + std::to_string(p.gid[i]));
-    seen[p.gid[i]] = 1;
-  }
+  // (Sorted, not flagged per id: a rank's share must not cost a byte per particle of the run.)
+  std::vector<std::uint32_t> ids(p.gid.begin(), p.gid.begin() + static_cast<std::ptrdiff_t>(n));
+  std::sort(ids.begin(), ids.end());
+  const auto twice = std::adjacent_find(ids.begin(), ids.end());
+  require(twice == ids.end(), twice == ids.end() ? "" : "two particles share the global id " + std::to_string(*twice));
 }
 
 // Appends the vectors' values to `out`, each after its length.
@@ -178,6 +178,14 @@ namespace {
 // Cuts a state joined rank after rank (WorldState::layout) down to rank r's share, in place: a
 // copy of the joined state would double a restart's peak memory.
 void keep_share_of_rank(WorldState& share, int r) {
+  if (share.share_of_rank >= 0) {  // read as this share alone
+    require(share.share_of_rank == r, "a state read as rank " + std::to_string(share.share_of_rank) +
+                                          "'s share restored on rank " + std::to_string(r));
+    share.ranks = 1;
+    share.layout = {};
+    share.share_of_rank = -1;
+    return;
+  }
   const WorldState::RankLayout l = share.layout;
   const auto start = [r](const std::vector<std::uint64_t>& shares) {
     return std::accumulate(shares.begin(), shares.begin() + r, std::uint64_t{0});
@@ -226,6 +234,8 @@ void World::restore_state(WorldState s, const Communicator* ranks) {
     require(w.material >= 0 && w.material < table_.wall_materials(), "wall material not in the scenario");
   require(s.skin > 0, "neighbour-list skin must be positive");
   require(!distributed(), "a distributed world is restored before it is spread over the ranks");
+  // Every rank restores the state it was given, whole or its share: none waits for rank 0's.
+  settings_.particles_on_first_rank = false;
   if (ranks && s.fits_ranks(static_cast<std::uint64_t>(ranks->size()))) {
     const WorldState::RankLayout& l = s.layout;
     spread_.ranks = RankGrid::with_cuts(*ranks, settings_.domain, l.cut, l.min_width, l.axis);
@@ -236,6 +246,7 @@ void World::restore_state(WorldState s, const Communicator* ranks) {
     for (const int a : spread_.ranks.stage_axes()) spread_.ranks.axes[a].rebalance = rebalance;
     return;
   }
+  require(s.share_of_rank < 0, "one rank's share of a state restored on another number of ranks");
   if (s.ranks > 1) {
     restore_by_global_ids(s);
     return;

@@ -40,6 +40,9 @@ struct WorldState {
     std::vector<std::uint64_t> particles, pair_entries, wall_entries;
   };
   RankLayout layout;  ///< no cuts for one rank and in files that predate it
+  // >= 0: the arrays hold only that rank's share of the joined ones (layout), as that rank
+  // read them from the file (io::read_checkpoint_share), not the whole state.
+  int share_of_rank = -1;
   // False on the ranks other than 0 of a distributed world: rank 0 gathers the pieces and
   // writes the checkpoint, so the others keep only their own piece, never a copy of the whole.
   bool whole = true;
