@@ -135,7 +135,7 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
   // Snapshot files for analyses of saved output (`talus coarse-grain`, `talus analyze`).
   auto snapshot_due = [&] {
     if (run.snapshot_interval <= 0 || world.time() < loop.next_snapshot - 0.5 * world.settings().time_step) return;
-    const Snapshot snapshot = world.snapshot();
+    const Snapshot snapshot = world.snapshot_on_first_rank();
     if (comm.rank() == 0) io::write_snapshot_file(opt.out / "snapshots" / io::snapshot_file_name(loop.snapshots), snapshot);
     ++loop.snapshots;
     loop.next_snapshot += run.snapshot_interval;

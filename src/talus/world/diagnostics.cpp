@@ -124,6 +124,11 @@ Snapshot World::snapshot() const {
                        : local_snapshot(PartnerNames::kRecord);
 }
 
+Snapshot World::snapshot_on_first_rank() const {
+  return distributed() ? gather_snapshot(local_snapshot(PartnerNames::kGlobalId), communicator(), next_gid_, 0)
+                       : local_snapshot(PartnerNames::kRecord);
+}
+
 World::SnapshotPiece World::snapshot_piece() const {
   SnapshotPiece piece;
   piece.snapshot = local_snapshot(PartnerNames::kRecordWithGhosts, &piece.owned);

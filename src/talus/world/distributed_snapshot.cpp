@@ -5,18 +5,19 @@
 
 namespace talus {
 
-Snapshot gather_snapshot(const Snapshot& piece, const Communicator& comm, std::size_t id_limit) {
+Snapshot gather_snapshot(const Snapshot& piece, const Communicator& comm, std::size_t id_limit, int root) {
   std::vector<std::byte> mine;
   ByteWriter w(mine);
   w.put(static_cast<std::uint64_t>(piece.particles.size()));
   for (const ParticleRecord& r : piece.particles) w.put(r);
   w.put(static_cast<std::uint64_t>(piece.contacts.size()));
   for (const ContactRecord& c : piece.contacts) w.put(c);
-  const std::vector<std::byte> all = comm.all_gather(mine);
+  const std::vector<std::byte> all = root < 0 ? comm.all_gather(mine) : comm.gather(mine, root);
 
   Snapshot s = piece;
   s.particles.clear();
   s.contacts.clear();
+  if (root >= 0 && comm.rank() != root) return s;
   ByteReader r(all);
   while (!r.done()) {
     for (auto n = r.get<std::uint64_t>(); n > 0; --n) s.particles.push_back(r.get<ParticleRecord>());

@@ -143,6 +143,8 @@ class World {
   // Particles in global id order, contacts with their forces: the whole system, on every rank
   // of a distributed world.
   Snapshot snapshot() const;
+  // The same on rank 0 alone, for the files it writes; the other ranks get no particles.
+  Snapshot snapshot_on_first_rank() const;
   // This rank's part of the system, for output written piece by piece (.pvtu): its particles in
   // global id order, then the copies from other ranks that its contacts reach (so that each
   // contact line has both ends), contacts of the pairs it lists, named by record in the piece.
