@@ -2,8 +2,8 @@
 from results folders, as PNG files in the folder.
 
 Usage: python3 -m talus plot DIR [--snapshot-times T1,T2,...]
-  DIR a dam-break run   runout and height profiles (Fig. 5), speeds (Fig. 12), force PDF
-                        (Fig. 15), fabric rose (Fig. 17), side snapshots (Figs. 6-8, needs
+  DIR a dam-break run   runout and height profiles (Fig. 5), speeds (Fig. 12), force network
+                        (Fig. 14), force PDF (Fig. 15), fabric rose (Fig. 17), side snapshots (Figs. 6-8, needs
                         run.vtk_interval; times in s after the gate opened, default 0, 1, 2, 3, 5
                         and 8 tau_c), energies
   DIR an ensemble       every run's speed curve (Figs. 12-13), force PDF and fabric averaged over
@@ -108,6 +108,43 @@ def force_pdf_axes(axes, tables, label_prefix=""):
     axes[0].legend(fontsize=8)
 
 
+def force_network_figure(folder: Path):
+    """Huet et al. 2021, Fig. 14: the contact network of the column before the gate opens, seen
+    from the side. Each segment joins the centres of two bodies in contact, its colour and width
+    set by F_c / <F_c>; (a) every contact, (b) those above five times the mean. Returns the
+    counts of both panels."""
+    from matplotlib.collections import LineCollection
+
+    t = read_csv(folder / "force_network.csv")
+    if t.size == 0:
+        return 0, 0
+    ratio = t["force"] / np.mean(t["force"])
+    segments = np.stack([np.column_stack([t["x_i"], t["z_i"]]), np.column_stack([t["x_j"], t["z_j"]])], axis=1)
+    x = np.concatenate([t["x_i"], t["x_j"]])
+    z = np.concatenate([t["z_i"], t["z_j"]])
+    top = max(5.0, float(np.max(ratio)))
+    height = float(np.ptp(z)) or 1.0
+    width = float(np.ptp(x)) or 1.0
+    panel = max(3.0, 8 * width / height)
+    fig, axes = plt.subplots(1, 3, figsize=(2 * panel + 1.2, 8), gridspec_kw={"width_ratios": [panel, panel, 0.25]})
+    for ax, keep, title in zip(axes[:2], (ratio >= 0, ratio > 5), ("(a) all contacts", r"(b) $F_c > 5 \langle F_c \rangle$")):
+        # Widths from a hairline at the weakest to 3 points at five times the mean and above.
+        lines = LineCollection(segments[keep], array=ratio[keep], cmap="viridis",
+                               linewidths=np.clip(0.15 + 0.57 * ratio[keep], 0.15, 3.0),
+                               norm=matplotlib.colors.Normalize(0, top))
+        ax.add_collection(lines)
+        ax.set_xlim(x.min() - 0.02 * width, x.max() + 0.02 * width)
+        ax.set_ylim(z.min() - 0.02 * height, z.max() + 0.02 * height)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (m)")
+        ax.set_title(f"{title}: {int(np.count_nonzero(keep))} of {len(ratio)}", fontsize=9)
+    axes[0].set_ylabel("z (m)")
+    fig.colorbar(lines, cax=axes[2], label=r"$F_c / \langle F_c \rangle$")
+    fig.suptitle("contact network before the gate opens", fontsize=10)
+    save(fig, folder / "fig14_force_network.png")
+    return len(ratio), int(np.count_nonzero(ratio > 5))
+
+
 def fabric_rose(folder: Path, tables, title: str) -> None:
     """Huet et al. 2021, Fig. 17: distribution of the branch-vector angle in the xz plane."""
     fig = plt.figure(figsize=(5, 5))
@@ -175,6 +212,8 @@ def run_figures(folder: Path, snapshot_times) -> None:
     speed_axes(ax)
     ax.set_title(f"a = {summary.get('aspect_ratio', float('nan')):.2f}, {summary.get('regime', '')}", fontsize=9)
     save(fig, folder / "fig12_speeds.png")
+    if (folder / "force_network.csv").exists():
+        force_network_figure(folder)
     if (folder / "force_pdf.csv").exists():
         fig, axes = plt.subplots(1, 2, figsize=(10, 4))
         force_pdf_axes(axes, [read_csv(folder / "force_pdf.csv")])
