@@ -1,4 +1,6 @@
 // A World spread over a grid of ranks (parallel/rank_grid.h).
+#include <algorithm>
+#include <array>
 #include <limits>
 #include <stdexcept>
 
@@ -32,15 +34,18 @@ RankGrid grid_of_first_rank(const RankGrid& mine, const Communicator& comm, cons
   const int slab_axis = r.get<int>();
   std::array<std::vector<double>, 3> cut;
   std::array<bool, 3> rebalance{};
-  double min_width = 0;
+  std::array<double, 3> min_width{};
   for (int a = 0; a < 3; ++a) {
-    min_width = r.get<double>();
+    min_width[a] = r.get<double>();
     rebalance[a] = r.get<bool>();
     cut[a].resize(r.get<std::uint64_t>());
     for (double& c : cut[a]) c = r.get<double>();
   }
-  RankGrid grid = RankGrid::with_cuts(comm, domain, std::move(cut), min_width, slab_axis);
-  for (int a = 0; a < 3; ++a) grid.axes[a].rebalance = rebalance[a];
+  // Every axis as on rank 0: an uncut axis has no narrowest slab, a cut one the interaction
+  // range, which later rebalancing must respect alike on every rank.
+  RankGrid grid = RankGrid::with_cuts(comm, domain, std::move(cut), *std::max_element(min_width.begin(), min_width.end()),
+                                      slab_axis);
+  for (int a = 0; a < 3; ++a) grid.axes[a].min_width = min_width[a], grid.axes[a].rebalance = rebalance[a];
   return grid;
 }
 
@@ -50,7 +55,8 @@ void World::distribute(const Communicator& comm, RankCounts counts, int slab_axi
   // A world built on rank 0 alone has the whole system there: rank 0 chooses the grid and
   // sends each rank its particles.
   const bool on_first_rank = settings_.particles_on_first_rank && comm.distributed();
-  if (on_first_rank && ready_) throw std::logic_error("World::distribute: a world built on rank 0 has not stepped");
+  if (on_first_rank && ready_)
+    throw std::logic_error("World::distribute: a world built on rank 0 alone is spread before its first step");
   settings_.particles_on_first_rank = false;  // from now on each rank adds what it owns
   RankGrid grid;
   if (!on_first_rank || comm.rank() == 0) grid = grid_for_whole_system(comm, counts, slab_axis);
