@@ -27,6 +27,18 @@ struct CgValues {
   Vec3 velocity() const { return density > 0 ? momentum / density : Vec3{}; }
   // Pa, the total stress of Eq. 32 (with the boundary part ending at the contact point).
   Eigen::Matrix3d stress() const { return kinetic_stress + contact_stress + boundary_stress; }
+
+  // Eqs. 29-30 evaluated pointwise: sum m (v - V)(v - V) W = sum m v v W - p p / rho, exact
+  // because V(r) is the field value at r. Formed from the additive fields, so it must be formed
+  // again whenever those are summed (over ranks, for instance).
+  void form_kinetic_stress() {
+    if (density <= 0) {
+      kinetic_stress.setZero();
+      return;
+    }
+    const Eigen::Vector3d p(momentum.x, momentum.y, momentum.z);
+    kinetic_stress = momentum_flux - p * p.transpose() / density;
+  }
 };
 
 struct CgFields {

@@ -33,9 +33,7 @@ void sum_over_ranks(CgFields& fields, const Communicator& ranks) {
   std::size_t at = 1;
   for (CgValues& v : fields.values) {
     for_each_additive(v, [&](double& x) { x = flat[at++]; });
-    const Eigen::Vector3d p(v.momentum.x, v.momentum.y, v.momentum.z);
-    v.kinetic_stress = v.density > 0 ? Eigen::Matrix3d(v.momentum_flux - p * p.transpose() / v.density)
-                                     : Eigen::Matrix3d::Zero();
+    v.form_kinetic_stress();
   }
 }
 

@@ -149,8 +149,7 @@ void add_segment(CgValues& v, const Segment& s, double line) {
   else v.contact_stress += line * s.tensor;
 }
 
-// Scales by the averaging area and forms the kinetic stress. Eqs. 29-30 evaluated pointwise:
-// sum m (v - V)(v - V) W = sum m v v W - p p / rho, exact because V(r) is the field value at r.
+// Scales by the averaging area and forms the kinetic stress.
 void finish(CgValues& v, double inv_area) {
   v.density *= inv_area;
   v.momentum *= inv_area;
@@ -158,10 +157,7 @@ void finish(CgValues& v, double inv_area) {
   v.contact_stress *= inv_area;
   v.boundary_stress *= inv_area;
   v.boundary_force *= inv_area;
-  if (v.density > 0) {
-    const Eigen::Vector3d p = eig(v.momentum);
-    v.kinetic_stress = v.momentum_flux - p * p.transpose() / v.density;
-  }
+  v.form_kinetic_stress();
 }
 
 void add_into(CgValues& to, const CgValues& from) {
