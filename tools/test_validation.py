@@ -5,7 +5,8 @@ between stable and collapsed is intermittent and its means carry standard errors
 from a synthetic h_stop staircase and flow map generated from the paper's values (Weinhart et
 al. 2012, Table 1, with noise) comes back within four standard errors and is written to
 table1.json. (The staircase's noise is kept small: the flow rule's errors are those of its own
-fit, given the fitted h_stop curve, and do not carry the curve's uncertainty.) Deterministic
+fit, given the fitted h_stop curve, and do not carry the curve's uncertainty.) The flow map's closures, made
+from the paper's Eqs. 52-54, come back from their fits and from its run-length check. Deterministic
 (fixed seed)."""
 import csv
 import json
@@ -20,6 +21,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import validation  # noqa: E402
+import validation_closures  # noqa: E402
 from talus.studies import chute_fits  # noqa: E402
 
 
@@ -137,6 +139,50 @@ class Validation(unittest.TestCase):
         self.assertIn("Every case lies on the side of the paper's curve that its outcome says.", lines)
         self.assertIsNone(table["delta1"])
         self.assertTrue(any("not determined yet" in line for line in lines))
+
+    def test_flow_map_closures_and_run_length(self):
+        # Steady flows made from the paper's closures (Table 1's flow rule and h_stop, Eqs. 52-54)
+        # with noise of the size of the paper's err: fitted against the paper's h_stop curve, beta
+        # and gamma come back within four standard errors, d_lambda of Eq. 54 too, and each
+        # closure's deviation from the paper's is of the noise's size. A case run to t = 500 and
+        # to t = 2000 is compared through the batch means of its series.
+        t1 = validation.TABLE1
+        hs = {k: t1[k] for k in ("A", "delta1", "delta2")}
+        P = validation_closures.PAPER
+        runs = []
+        for H in [10, 20, 30, 40]:
+            for theta in [22, 24, 26, 28]:
+                h = 0.93 * H
+                F = t1["beta"] * h / chute_fits.hstop35(theta, **hs) - t1["gamma"] + self.rng.normal(0, 0.02)
+                alpha = float(chute_fits.shape_factor54([h], [theta], P["d_lambda"], hs)[0]) + self.rng.normal(0, 0.005)
+                runs.append({"lambda": 1, "H": H, "angle": theta, "flow_state": "steady", "h": h, "froude": F,
+                             "alpha": alpha,
+                             "K": float(chute_fits.stress_ratio53(theta, P["d0"], P["d1"])) + self.rng.normal(0, 0.005),
+                             "bulk_volume_fraction": float(chute_fits.density52(theta, P["c0"], P["c1"], P["c2"]))
+                             + self.rng.normal(0, 0.001)})
+        runs.append(dict(runs[0], angle=30, flow_state="accelerating", froude=2.0))  # left out of every fit
+        long_run = dict(runs[5], froude=runs[5]["froude"] + 0.01)
+        for study, row, F in (("flowmap", runs[5], runs[5]["froude"]), ("flowmap_long", long_run, long_run["froude"])):
+            folder = validation_closures.case_folder(self.base, study, row)
+            write_csv(folder / "chute_series.csv", [{"time": 400 + k, "froude": F + 0.01 * (-1) ** k} for k in range(100)])
+        lines, fits, figure = validation_closures.section(chute_fits, runs, [long_run], None, False, hs, self.base)
+        self.assertIsNone(fits["talus"])
+        b = fits["paper_hstop"]
+        self.assertEqual(b["n"], 16)
+        for name in ("beta", "gamma"):
+            self.assertLess(abs(b["params"][name] - t1[name]), 4 * b["se"][name], name)
+        close = validation_closures.closures(chute_fits, validation_closures.steady(runs), hs)
+        self.assertLess(close["K"]["paper_err"], 0.01)
+        self.assertLess(close["bulk_volume_fraction"]["paper_err"], 0.002)
+        self.assertLess(close["alpha"]["paper_err"], 0.01)
+        self.assertLess(abs(close["alpha"]["params"]["d_lambda"] - P["d_lambda"]), 4 * close["alpha"]["se"]["d_lambda"])
+        [check] = validation_closures.length_check(runs, [long_run], self.base)
+        # Alternating series: each batch of 20 blocks has the same mean, so the error is zero and
+        # the 0.01 difference infinitely many sigmas; a plain error would be 0.01 / sqrt(100).
+        self.assertEqual(check["F_short_err"], 0.0)
+        self.assertAlmostEqual(check["F_long"] - check["F_short"], 0.01)
+        self.assertTrue(figure.exists())
+        self.assertTrue(any(line.startswith("| 20 | 24° | steady |") for line in lines))
 
 
 if __name__ == "__main__":

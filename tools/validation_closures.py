@@ -1,0 +1,223 @@
+"""Weinhart et al. 2012, Sects. 7 and 9, from the steady flows of the flow map: the flow rule
+(Eq. 47, Table 1: beta, gamma), the bulk volume fraction (Eq. 52), the stress ratio K (Eq. 53) and
+the shape factor alpha (Eq. 54, Table 2: d_lambda), each fitted with its standard error and each
+also set against the paper's own closure at Talus' cases (no free parameter), with the paper's
+err of Eq. 49 beside it; the check that the map's runs to t = 500 give the Froude numbers of runs
+to the paper's t = 2000; and the figure of F against h / h_stop and the closures (Figs. 11-13)."""
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+
+# Weinhart et al. 2012, lambda = 1: Eq. (52b), Eq. (53), Table 2, and the errors of Eq. (49)
+# it quotes for them (Eq. 52c, Sect. 9.2, Table 2, Table 1's err(F)).
+PAPER = {"c0": 0.5985, "c1": 4.8, "c2": 40.85, "d0": 132.0, "d1": 21.50, "d_lambda": 6.678}
+PAPER_ERR = {"F": 0.121, "bulk_volume_fraction": 0.002, "K": 0.013, "alpha": 0.01763}
+BATCHES = 5  # batch means of a case's series: its Froude number's standard error
+
+
+def steady(rows):
+    return [r for r in rows if r.get("flow_state") == "steady" and r.get("h") not in ("", None)]
+
+
+def case_folder(base: Path, study: str, r) -> Path:
+    return base / "weinhart2012" / study / f"lambda{r['lambda']:g}_H{r['H']:g}_theta{r['angle']:g}"
+
+
+def froude_error(folder: Path):
+    """Standard error of a case's Froude number from the batch means of its averaging window's
+    series (chute_series.csv, one row per block of time): consecutive blocks are correlated, batches
+    of several blocks much less so. nan when the series is too short or missing."""
+    path = folder / "chute_series.csv"
+    if not path.exists():
+        return math.nan
+    with open(path) as f:
+        F = np.array([float(r["froude"]) for r in csv.DictReader(f)])
+    if len(F) < 2 * BATCHES:
+        return math.nan
+    means = [b.mean() for b in np.array_split(F, BATCHES)]
+    return float(np.std(means, ddof=1) / math.sqrt(BATCHES))
+
+
+def flow_rule(chute_fits, rows, hs):
+    """Eq. (47) through the steady flows, h_stop from Eq. (35) with the parameters hs."""
+    if len(rows) < 3:
+        return None
+    p, se, e = chute_fits.fit_flow_rule([r["h"] for r in rows], [r["angle"] for r in rows],
+                                        [r["froude"] for r in rows], hs)
+    return {"params": p, "se": se, "err": e, "n": len(rows)}
+
+
+def closures(chute_fits, rows, hs_paper):
+    """Each closure's own fit (or None where the cases cannot determine it) and the rms deviation
+    of Talus' cases from the paper's closure, as Eq. (49)."""
+    out = {}
+    theta = np.array([r["angle"] for r in rows], float)
+    if len(rows) < 2:
+        return out
+    bulk = [r for r in rows if r.get("bulk_volume_fraction") not in ("", None)]
+    if bulk:
+        th = np.array([r["angle"] for r in bulk], float)
+        phi = np.array([r["bulk_volume_fraction"] for r in bulk], float)
+        block = {"paper_err": chute_fits.err(phi - chute_fits.density52(th, PAPER["c0"], PAPER["c1"], PAPER["c2"])),
+                 "n": len(bulk)}
+        if len(set(th)) >= 4:  # three parameters need four angles
+            try:
+                block.update(zip(("params", "se", "err"), chute_fits.fit_density(th, phi)))
+            except (RuntimeError, ValueError):
+                pass
+        out["bulk_volume_fraction"] = block
+    K = np.array([r["K"] for r in rows], float)
+    block = {"paper_err": chute_fits.err(K - chute_fits.stress_ratio53(theta, PAPER["d0"], PAPER["d1"])), "n": len(rows)}
+    if len(set(theta)) >= 3:
+        block.update(zip(("params", "se", "err"), chute_fits.fit_stress_ratio(theta, K)))
+    out["K"] = block
+    h = np.array([r["h"] for r in rows], float)
+    alpha = np.array([r["alpha"] for r in rows], float)
+    try:
+        predicted = chute_fits.shape_factor54(h, theta, PAPER["d_lambda"], hs_paper)
+        block = {"paper_err": chute_fits.err(alpha - predicted), "n": len(rows)}
+        block.update(zip(("params", "se", "err"), chute_fits.fit_shape_factor(h, theta, alpha, hs_paper)))
+        out["alpha"] = block
+    except (RuntimeError, ValueError):
+        pass  # a flow thinner than its base layer: Eq. (54) has no profile there
+    return out
+
+
+def length_check(flowmap, long_rows, base: Path):
+    """Each case of the long runs (t = 2000) beside the same (H, theta) of the map (t = 500):
+    Froude numbers with their batch-mean errors and their difference in combined errors."""
+    short = {(r["H"], r["angle"]): r for r in flowmap}
+    out = []
+    for r in long_rows:
+        s = short.get((r["H"], r["angle"]))
+        if not s or r.get("froude") in ("", None) or s.get("froude") in ("", None):
+            continue
+        e_long = froude_error(case_folder(base, "flowmap_long", r))
+        e_short = froude_error(case_folder(base, "flowmap", s))
+        combined = math.hypot(e_long, e_short)
+        out.append({"H": r["H"], "angle": r["angle"], "F_short": s["froude"], "F_short_err": e_short,
+                    "F_long": r["froude"], "F_long_err": e_long, "h_short": s["h"], "h_long": r["h"],
+                    "states": (s["flow_state"], r["flow_state"]),
+                    "sigmas": abs(r["froude"] - s["froude"]) / combined if combined > 0 else math.nan})
+    return out
+
+
+def pm(v, e, digits=4):
+    return f"{v:.{digits}g} ± {e:.2g}" if math.isfinite(e) else f"{v:.{digits}g}"
+
+
+def section(chute_fits, flowmap, long_rows, hs_talus, talus_determined, paper_hstop, base: Path):
+    """The report's lines on the flow map, the fits for table1.json ({"talus": block or None,
+    "paper_hstop": block or None}) and the figure's path (None without steady flows)."""
+    rows = steady(flowmap)
+    lines = [f"**The flow map** (Sects. 7 and 9): {len(flowmap)} of its 16 cases (H = 10, 20, 30, 40; theta = 22, "
+             "24, 26, 28°) have run, to t = 500, with depth profiles averaged over t in [400, 500]. "
+             f"{len(rows)} are steady.", ""]
+    if flowmap:
+        lines += ["| H | theta | state | h (d) | F | h / h_stop (Table 1) | K | alpha | bulk volume fraction |",
+                  "|---|---|---|---|---|---|---|---|---|"]
+        for r in sorted(flowmap, key=lambda r: (r["H"], r["angle"])):
+            def num(k, fmt=".3f"):
+                return format(r[k], fmt) if r.get(k) not in ("", None) else ""
+            ratio = ""
+            if r.get("h") not in ("", None):
+                ratio = f"{r['h'] / float(chute_fits.hstop35(r['angle'], **paper_hstop)):.2f}"
+            F = pm(r["froude"], froude_error(case_folder(base, "flowmap", r)), 3) if r.get("froude") not in ("", None) else ""
+            lines.append(f"| {r['H']:g} | {r['angle']:g}° | {r['flow_state']} | {num('h', '.2f')} | {F} | {ratio} | "
+                         f"{num('K')} | {num('alpha')} | {num('bulk_volume_fraction')} |")
+        lines.append("")
+    fits = {"talus": flow_rule(chute_fits, rows, hs_talus) if hs_talus and talus_determined else None,
+            "paper_hstop": flow_rule(chute_fits, rows, paper_hstop)}
+    if fits["paper_hstop"]:
+        lines += ["The flow rule F = beta h / h_stop(theta) - gamma (Eq. 47) through the steady flows, with Talus' own "
+                  "h_stop fit (Eq. 35) and with the paper's Table 1 curve, which Talus' arrest intervals bracket:", "",
+                  "| h_stop from | flows | beta | gamma | err(F) |", "|---|---|---|---|---|"]
+        for key, label in (("talus", "Talus' Eq. 35 fit"), ("paper_hstop", "Weinhart et al. 2012, Table 1")):
+            b = fits[key]
+            if b:
+                lines.append(f"| {label} | {b['n']} | {pm(b['params']['beta'], b['se']['beta'])} | "
+                             f"{pm(b['params']['gamma'], b['se']['gamma'])} | {b['err']:.3f} |")
+            else:
+                lines.append(f"| {label} | | not determined | | |")
+        lines += ["", "Weinhart et al. 2012, Table 1: beta = 0.196, gamma = 0.040, err(F) = 0.121 (over all its "
+                  "steady flows, H = 10 to 40).", ""]
+    close = closures(chute_fits, rows, paper_hstop)
+    if close:
+        lines += ["Closures (Sect. 9.2) over the same steady flows: each one's fit where the cases determine it, "
+                  "and the rms deviation (Eq. 49) of Talus' cases from the paper's closure with its constants:", "",
+                  "| closure | Talus fit | Weinhart et al. 2012 | err(Talus - paper's closure) | paper's err |",
+                  "|---|---|---|---|---|"]
+        labels = {"bulk_volume_fraction": ("Eq. 52, bulk volume fraction", ("c0", "c1", "c2")),
+                  "K": ("Eq. 53, K = sigma_xx / sigma_zz", ("d0", "d1")),
+                  "alpha": ("Eq. 54, shape factor alpha", ("d_lambda",))}
+        for key, (label, names) in labels.items():
+            b = close.get(key)
+            if not b:
+                continue
+            fit = ", ".join(f"{n} = {pm(b['params'][n], b['se'][n])}" for n in names) if "params" in b else \
+                "too few angles"
+            paper = ", ".join(f"{n} = {PAPER[n]:g}" for n in names)
+            lines.append(f"| {label} | {fit} | {paper} | {b['paper_err']:.3f} | {PAPER_ERR[key]} |")
+        lines.append("")
+    checks = length_check(flowmap, long_rows, base)
+    lines += ["**Run length.** The map's runs end at t = 500, the paper's at t = 2000. The same cases run to t = 2000 "
+              "(flowmap_long; Froude numbers with batch-mean standard errors over the last 100 time units):", ""]
+    if checks:
+        lines += ["| H | theta | F, t = 500 | F, t = 2000 | h, t = 500 / 2000 | difference |", "|---|---|---|---|---|---|"]
+        for c in checks:
+            lines.append(f"| {c['H']:g} | {c['angle']:g}° | {pm(c['F_short'], c['F_short_err'], 3)} | "
+                         f"{pm(c['F_long'], c['F_long_err'], 3)} | {c['h_short']:.2f} / {c['h_long']:.2f} | "
+                         f"{c['sigmas']:.1f} sigma |")
+        lines.append("")
+    else:
+        lines += ["None has finished yet: until one has, the shorter runs are not shown to be long enough.", ""]
+    figure = plot(chute_fits, flowmap, fits, paper_hstop, hs_talus if talus_determined else None,
+                  base / "weinhart2012") if rows else None
+    return lines, fits, figure
+
+
+def plot(chute_fits, flowmap, fits, paper_hstop, hs_talus, out: Path):
+    """Fig. 11 (F against h / h_stop) and Figs. 12-13's closures against theta."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = steady(flowmap)
+    fig, axes = plt.subplots(1, 4, figsize=(16, 4))
+    x = np.array([r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop)) for r in rows])
+    F = np.array([r["froude"] for r in rows])
+    ax = axes[0]
+    for H in sorted({r["H"] for r in rows}):
+        pick = [i for i, r in enumerate(rows) if r["H"] == H]
+        ax.plot(x[pick], F[pick], "o", label=f"Talus, H = {H:g}")
+    xs = np.linspace(0, max(x.max(), 1) * 1.1, 50)
+    ax.plot(xs, 0.196 * xs - 0.040, "k-", lw=1, label="Table 1: 0.196 x - 0.040")
+    b = fits.get("paper_hstop")
+    if b:
+        ax.plot(xs, b["params"]["beta"] * xs - b["params"]["gamma"], "r--", lw=1, label="Talus fit")
+    ax.set(xlabel="h / h_stop(theta) (Table 1's curve)", ylabel="F = u / sqrt(g h cos theta)",
+           title="flow rule (Fig. 11)")
+    ax.legend(fontsize=7)
+    theta = np.array([r["angle"] for r in rows])
+    grid = np.linspace(20, 30, 100)
+    for ax, key, curve, label in (
+            (axes[1], "bulk_volume_fraction", chute_fits.density52(grid, PAPER["c0"], PAPER["c1"], PAPER["c2"]),
+             "bulk volume fraction (Fig. 12)"),
+            (axes[2], "K", chute_fits.stress_ratio53(grid, PAPER["d0"], PAPER["d1"]), "K = sigma_xx / sigma_zz"),
+            (axes[3], "alpha", None, "shape factor alpha (Fig. 13)")):
+        pts = [(r["angle"], r[key]) for r in rows if r.get(key) not in ("", None)]
+        if pts:
+            ax.plot(*zip(*pts), "o", label="Talus")
+        if curve is not None:
+            ax.plot(grid, curve, "k-", lw=1, label="Weinhart et al. 2012")
+        else:
+            predicted = chute_fits.shape_factor54([r["h"] for r in rows], theta, PAPER["d_lambda"], paper_hstop)
+            ax.plot(theta, predicted, "kx", label="Eq. 54 with Table 2's d_lambda")
+        ax.set(xlabel="theta (deg)", title=label)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    path = out / "flow_rule_lambda1.png"
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+    return path
