@@ -216,6 +216,10 @@ double body_box_gap(const CompositeShape& si, const BodyFrame& bi, const Composi
 
 std::uint64_t ticks(bool on) { return on ? __rdtsc() : 0; }
 
+// A row's travel plus the clock, raised by far more than the round-off of the two sums (each a
+// sum over at most some 10^7 steps since the list was built, 2^-52 relative per term).
+double wake_margin(double travel_and_clock) { return travel_and_clock * (1 + 1e-8); }
+
 // Asks for the cache lines of [data, data + bytes), at most 8 of them.
 void prefetch_lines(const void* data, std::size_t bytes) {
   const char* c = static_cast<const char*>(data);
@@ -425,7 +429,12 @@ void World::composite_pair_forces(double memory_dt) {
   const long rows = static_cast<long>(list.rows());
   const long blocks = (rows + kRowsPerBlock - 1) / kRowsPerBlock;
   if (shaped_.block_loads.size() < static_cast<std::size_t>(blocks)) shaped_.block_loads.resize(blocks);
-  if (!shaped_.budgets.matches(list)) shaped_.budgets.reset(list, p, shapes_);
+  if (!shaped_.budgets.matches(list)) {
+    shaped_.budgets.reset(list, p, shapes_);
+    shaped_.block_wake.clear();
+  }
+  if (shaped_.block_wake.size() != static_cast<std::size_t>(blocks)) shaped_.block_wake.assign(blocks, {});
+  const double clock = shaped_.placed.travel_clock();
   shaped_.pair_points.follow(list);
   double* budget = shaped_.budgets.body();
   const std::size_t bodies = p.position.size();  // ghosts receive loads too (folded later)
@@ -438,6 +447,7 @@ void World::composite_pair_forces(double memory_dt) {
     const int thread = omp_get_thread_num();
     std::vector<std::uint32_t> awake;  // entries of the block's rows worth a look, in order
     std::array<std::uint32_t, kRowsPerBlock + 1> awake_start;  // per row of the block, into `awake`
+    std::array<double, kRowsPerBlock> next_asleep_until{};     // ShapedContacts::BlockWake
     for (long block = 0; shaped_.block_schedule.next(thread, block);) {
       const std::uint64_t block_start = __rdtsc();
       ShapedContacts::BlockLoads& loads = shaped_.block_loads[block];
@@ -450,10 +460,12 @@ void World::composite_pair_forces(double memory_dt) {
       // The awake entries (apart by less than both bodies can have moved since the gap was
       // measured, or touching) are gathered here, so that the pass below visits only them.
       const long first_row = block * kRowsPerBlock;
+      ShapedContacts::BlockWake& last_pass = shaped_.block_wake[block];
       awake.clear();
       for (long row = first_row; row < last; ++row) {
         const auto i = static_cast<std::uint32_t>(row);
-        awake_start[row - first_row] = static_cast<std::uint32_t>(awake.size());
+        const std::size_t r = static_cast<std::size_t>(row - first_row);
+        awake_start[r] = static_cast<std::uint32_t>(awake.size());
         const double travel_i = shaped_.placed.travel(i);
         const auto wake = [&](std::uint32_t e) {
           const std::uint32_t j = list.neighbor(e);
@@ -462,23 +474,51 @@ void World::composite_pair_forces(double memory_dt) {
           if (p.shape[j] != 0)  // the two lines of every part
             prefetch_lines(shaped_.placed.parts(j), shaped_.placed.part_count(j) * sizeof(PlacedPart));
         };
+        // Entry e sleeps while travel_i + travel_j < budget[e]. Since the last full test of the
+        // row, travel_j has grown by no more than the clock has: the sleepers found then stay
+        // asleep while travel_i + clock < min(budget[e] - travel_j then) + clock then. The
+        // margin covers the round-off of the travels' and the clock's sums.
+        if (last_pass.valid && wake_margin(travel_i + clock) < last_pass.asleep_until[r]) {
+          double asleep_until = last_pass.asleep_until[r];
+          for (std::uint32_t k = last_pass.start[r]; k < last_pass.start[r + 1]; ++k) {
+            const std::uint32_t e = last_pass.awake[k];
+            const double travel_j = shaped_.placed.travel(list.neighbor(e));
+            if (travel_i + travel_j < budget[e]) asleep_until = std::min(asleep_until, budget[e] - travel_j + clock);
+            else wake(e);
+          }
+          next_asleep_until[r] = asleep_until;
+          continue;
+        }
+        double asleep_until = std::numeric_limits<double>::infinity();
         std::uint32_t e = list.row_begin(i);
         const std::uint32_t row_end = list.row_end(i);
 #ifdef TALUS_COMPOSITE_AVX2
         // Four entries per test (a cross lists some 37 neighbours, one in ten awake).
         const __m256d travel_i4 = _mm256_set1_pd(travel_i);
+        __m256d until4 = _mm256_set1_pd(asleep_until);
         for (; e + 4 <= row_end; e += 4) {
           const __m128i j4 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(list.neighbors() + e));
           const __m256d travel_j = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), shaped_.placed.travels(), j4,
                                                             _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
           const __m256d travelled = _mm256_add_pd(travel_i4, travel_j);
+          const __m256d budget4 = _mm256_loadu_pd(budget + e);
           // Awake unless travelled < budget, exactly as the scalar test (NaN stays awake).
-          int wakes = _mm256_movemask_pd(_mm256_cmp_pd(travelled, _mm256_loadu_pd(budget + e), _CMP_NLT_UQ));
+          const __m256d awake4 = _mm256_cmp_pd(travelled, budget4, _CMP_NLT_UQ);
+          const __m256d until_e = _mm256_add_pd(_mm256_sub_pd(budget4, travel_j), _mm256_set1_pd(clock));
+          until4 = _mm256_min_pd(until4, _mm256_blendv_pd(until_e, _mm256_set1_pd(asleep_until), awake4));
+          int wakes = _mm256_movemask_pd(awake4);
           for (; wakes; wakes &= wakes - 1) wake(e + static_cast<std::uint32_t>(__builtin_ctz(wakes)));
         }
+        alignas(32) double until_lanes[4];
+        _mm256_store_pd(until_lanes, until4);
+        for (double u : until_lanes) asleep_until = std::min(asleep_until, u);
 #endif
-        for (; e < row_end; ++e)
-          if (!(travel_i + shaped_.placed.travel(list.neighbor(e)) < budget[e])) wake(e);
+        for (; e < row_end; ++e) {
+          const double travel_j = shaped_.placed.travel(list.neighbor(e));
+          if (travel_i + travel_j < budget[e]) asleep_until = std::min(asleep_until, budget[e] - travel_j + clock);
+          else wake(e);
+        }
+        next_asleep_until[r] = asleep_until;
       }
       awake_start[last - first_row] = static_cast<std::uint32_t>(awake.size());
       shaped_.pair_points.start_block(block);
@@ -524,6 +564,11 @@ void World::composite_pair_forces(double memory_dt) {
         if (fi != Vec3{} || ti != Vec3{}) loads[range_of(i)].push_back({i, fi, ti});
       }
       shaped_.pair_points.finish_block(block);
+      // This pass's awake entries are the next pass's to test again; its buffer is recycled.
+      std::swap(last_pass.awake, awake);
+      std::copy(awake_start.begin(), awake_start.end(), last_pass.start.begin());
+      last_pass.asleep_until = next_asleep_until;
+      last_pass.valid = true;
       shaped_.block_schedule.record(block, __rdtsc() - block_start);
     }
 #pragma omp barrier

@@ -140,6 +140,7 @@ void World::rebuild() {
   const MemoryLayout layout = memory_layout();
   lists_.pairs.build(p, cell_of, lists_.grid, lists_.skin, layout);
   shaped_.budgets.clear();  // new entries, and the travels restart
+  shaped_.block_wake.clear();  // its bounds are on the old travels' scale, its entries the old list's
   shaped_.placed.restart_travel();
   std::vector<std::int64_t> origin;
   lists_.pairs.restore_memory(carried, p.gid, has_composites() ? &origin : nullptr);

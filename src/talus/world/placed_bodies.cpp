@@ -1,6 +1,8 @@
 #include "talus/world/placed_bodies.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #include "talus/world/parallel.h"
@@ -36,16 +38,21 @@ void PlacedBodies::place(const ParticleStore& p, const std::vector<CompositeShap
     last_position_.assign(p.position.begin(), p.position.end());
     last_orientation_.assign(p.orientation.begin(), p.orientation.end());
     travel_.assign(n, 0.0);
+    travel_clock_ = 0;
     restart_travel_ = false;
   }
   const long count = static_cast<long>(n);
-#pragma omp parallel for schedule(static) if (worth_parallel(4 * n))
+  double largest_step = 0;
+#pragma omp parallel for schedule(static) reduction(max : largest_step) if (worth_parallel(4 * n))
   for (long i = 0; i < count; ++i) {
     if (!restart) {
       // |vec(q_new q_old^*)| = sin(theta / 2) for the turn theta between the two poses.
       const Quat turn = p.orientation[i] * last_orientation_[i].conjugate();
       const double half_sine = std::sqrt(turn.x * turn.x + turn.y * turn.y + turn.z * turn.z);
-      travel_[i] += norm(p.position[i] - last_position_[i]) + 2 * p.radius[i] * half_sine;
+      const double step = norm(p.position[i] - last_position_[i]) + 2 * p.radius[i] * half_sine;
+      travel_[i] += step;
+      // A body whose motion is not a number wakes every pair it is in: so must the clock.
+      largest_step = std::max(largest_step, std::isnan(step) ? std::numeric_limits<double>::infinity() : step);
       last_position_[i] = p.position[i];
       last_orientation_[i] = p.orientation[i];
     }
@@ -58,6 +65,7 @@ void PlacedBodies::place(const ParticleStore& p, const std::vector<CompositeShap
     PlacedPart* out = parts_.data() + offset_[i];
     for (std::size_t a = 0; a < s.parts.size(); ++a) place_part(s.parts[a], body, out[a]);
   }
+  travel_clock_ += largest_step;
 }
 
 }  // namespace talus

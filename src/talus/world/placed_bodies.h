@@ -57,6 +57,10 @@ class PlacedBodies {
   // over steps of |dx| + 2 R sin(theta / 2), the chord of a turn by theta at the bounding radius R.
   double travel(std::size_t i) const { return travel_[i]; }
   const double* travels() const { return travel_.data(); }
+  // The sum over steps of the largest step travel of any body (ghosts included), since the
+  // travels restarted: no body's travel grows by more than this does, so a pass can tell that a
+  // whole row of pairs stays apart without reading its neighbours' travels.
+  double travel_clock() const { return travel_clock_; }
   const BodyFrame& body(std::size_t i) const { return bodies_[i]; }
   const PlacedPart* parts(std::size_t i) const { return parts_.data() + offset_[i]; }
   std::size_t part_count(std::size_t i) const { return offset_[i + 1] - offset_[i]; }
@@ -68,6 +72,7 @@ class PlacedBodies {
   std::vector<Vec3> last_position_;
   std::vector<Quat> last_orientation_;
   std::vector<double> travel_;
+  double travel_clock_ = 0;
   bool restart_travel_ = true;
 };
 
