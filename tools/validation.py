@@ -25,6 +25,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import validation_closures  # noqa: E402
+import validation_sensitivity  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 VALIDATION = ROOT / "validation"
@@ -108,7 +109,7 @@ CHUTE_STUDIES = [
                                       "--end-time", "500", "--average", "100"], ["sweep_runs.csv"]),
     ChuteStudy("flowmap_long", "flowmap", ["--lambda", "1", "--heights", "10,20", "--angles", "24",
                                            "--end-time", "2000", "--average", "100"], ["sweep_runs.csv"]),
-]
+] + validation_sensitivity.STUDIES(ChuteStudy)
 CHUTE_CASE_FILES = ["summary.json", "chute_profile.csv", "chute_series.csv"]
 # Weinhart et al. 2012, Table 1, lambda = 1, and the agreement issue 26 asks for.
 TABLE1 = {"delta1": 17.708, "delta2": 32.780, "A": 3.355, "beta": 0.196, "gamma": 0.040}
@@ -702,6 +703,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
     lines += table_lines + ["", f"The paper's curve passes within {worst:.2f}° of every angle interval so far "
                             "(the intervals are 0.5° wide).", ""]
     lines += wrong_side_lines(chute_fits, staircase)
+    lines += validation_sensitivity.lines(chute_fits, staircase, base)
     lines += preparation_lines(chute_fits, out, staircase)
     lines += ["Fits through the interval midpoints (standard errors from the least-squares covariance):", "",
               "| fit | points | A | delta1 | delta2 | err |", "|---|---|---|---|---|---|"]

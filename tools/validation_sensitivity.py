@@ -1,0 +1,41 @@
+"""Whether an h_stop case's outcome belongs to the simulation or to its one realisation: the case
+of the staircase farthest on the wrong side of the paper's curve (H = 8 arrested at 23°, where
+Weinhart et al. 2012's Eq. 35 puts theta_stop at 22.74°) run again from two other random fillings
+(run.seed), and once more from the first filling with half the time step (t_c / 100, against the
+paper's t_c / 50), each to t = 500 under the arrest test of Sect. 6."""
+from pathlib import Path
+
+CASE = {"H": 8, "angle": 23}
+CONTACT_TIME = 0.0049711793850625635  # examples/chute.toml: k_n = 2e5, damping rate 50, m = 1 (Eqs. 5-6)
+VARIANTS = [("hstop_seed2", "filling seed 2", ["run.seed=2"]),
+            ("hstop_seed3", "filling seed 3", ["run.seed=3"]),
+            ("hstop_dt100", "seed 1, time step t_c / 100", ["run.time_step=%r" % (CONTACT_TIME / 100)])]
+
+
+def STUDIES(study_class):
+    out = []
+    for name, _, sets in VARIANTS:
+        options = ["--lambda", "1", "--heights", str(CASE["H"]), "--angles", str(CASE["angle"]), "--end-time", "500",
+                   "--average", "20"]
+        for s in sets:
+            options += ["--set", s]
+        out.append(study_class(name, "flowmap", options, ["sweep_runs.csv"]))
+    return out
+
+
+def lines(chute_fits, staircase, base: Path):
+    first = [r for r in staircase if r["H"] == CASE["H"] and r["angle"] == CASE["angle"]]
+    rows = [("staircase (seed 1, t_c / 50)", first[0] if first else None)]
+    for name, label, _ in VARIANTS:
+        found = chute_fits._read(str(base / "weinhart2012" / name / "sweep_runs.csv"))
+        rows.append((label, found[0] if found else None))
+    out = [f"**One realisation or the simulation?** H = {CASE['H']} at {CASE['angle']}° again:", "",
+           "| run | outcome | arrest time | h (d) |", "|---|---|---|---|"]
+    for label, r in rows:
+        if r is None:
+            out.append(f"| {label} | not run yet | | |")
+            continue
+        arrest = r.get("arrest_time")
+        arrest = f"{arrest:.0f}" if arrest not in ("", None) else ""
+        out.append(f"| {label} | {r['flow_state']} | {arrest} | {r['h']:.2f} |")
+    return out + [""]
