@@ -91,8 +91,9 @@ class ChuteStudy:
     """A chute study of Weinhart et al. 2012 run by `python3 -m talus hstop` or `flowmap` (which reuse
     finished cases and resume cut-off ones from their checkpoints)."""
 
-    def __init__(self, name, command, options, tables):
+    def __init__(self, name, command, options, tables, scenario="examples/chute.toml"):
         self.paper, self.name, self.command, self.options, self.tables = "weinhart2012", name, command, options, tables
+        self.scenario = scenario
 
     def folder(self, base):
         return base / self.paper / self.name
@@ -137,7 +138,7 @@ def run_folders(family_dir: Path):
 def run_chute_study(study, args, runs):
     out = study.folder(runs)
     restore_kept_chute(study, out)
-    run_study_command(args, study.command, str(ROOT / "examples" / "chute.toml"), *study.options, "--jobs", str(args.jobs),
+    run_study_command(args, study.command, str(ROOT / study.scenario), *study.options, "--jobs", str(args.jobs),
           "--out", str(out))
     compact_chute(study, out)
 
@@ -662,8 +663,8 @@ def weinhart_report(lines, figures, base=VALIDATION):
     complete = (hstop_dir / "hstop_intervals.csv").exists()
     intervals = (chute_fits._read(str(hstop_dir / "hstop_intervals.csv")) if complete
                  else chute_fits.arrest_intervals(staircase))
-    flowmap = [r for r in chute_fits._read(str(out / "flowmap" / "sweep_runs.csv")) if r.get("lambda") == 1.0]
-    long_runs = [r for r in chute_fits._read(str(out / "flowmap_long" / "sweep_runs.csv")) if r.get("lambda") == 1.0]
+    flowmap = [r for r in validation_closures.kept_rows(chute_fits, out / "flowmap") if r.get("lambda") == 1.0]
+    long_runs = [r for r in validation_closures.kept_rows(chute_fits, out / "flowmap_long") if r.get("lambda") == 1.0]
     runs = staircase + flowmap
     lines += ["## Weinhart et al. 2012: h_stop and the flow rule, lambda = 1", ""]
     if not intervals and not runs:

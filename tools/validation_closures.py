@@ -5,6 +5,7 @@ also set against the paper's own closure at Talus' cases (no free parameter), wi
 err of Eq. 49 beside it; the check that the map's runs to t = 500 give the Froude numbers of runs
 to the paper's t = 2000; and the figure of F against h / h_stop and the closures (Figs. 11-13)."""
 import csv
+import json
 import math
 from pathlib import Path
 
@@ -15,6 +16,30 @@ import numpy as np
 PAPER = {"c0": 0.5985, "c1": 4.8, "c2": 40.85, "d0": 132.0, "d1": 21.50, "d_lambda": 6.678}
 PAPER_ERR = {"F": 0.121, "bulk_volume_fraction": 0.002, "K": 0.013, "alpha": 0.01763}
 BATCHES = 5  # batch means of a case's series: its Froude number's standard error
+
+
+def kept_rows(chute_fits, study_dir: Path):
+    """The rows of a chute study's table (sweep_runs.csv, written once all its cases are done), and
+    of its finished cases still missing from it, read from their kept summary.json."""
+    rows = chute_fits._read(str(study_dir / "sweep_runs.csv"))
+    seen = {(r["lambda"], r["H"], r["angle"]) for r in rows}
+    for case in sorted(study_dir.glob("lambda*_H*_theta*")):
+        lam, rest = case.name[len("lambda"):].split("_H")
+        H, angle = rest.split("_theta")
+        key = (float(lam), float(H), float(angle))
+        summary_path = case / "summary.json"
+        if key in seen or not summary_path.exists():
+            continue
+        s = json.loads(summary_path.read_text())
+        if s.get("stop_reason") in ("interrupted", "blow_up"):
+            continue
+        row = {"lambda": key[0], "H": key[1], "angle": key[2], "flow_state": s.get("flow_state"),
+               "arrested": int(s.get("stop_reason") == "arrested" or s.get("flow_state") == "arrested"),
+               "arrest_time": s.get("chute", {}).get("arrest_time")}
+        for k in ("h", "froude", "K", "alpha", "bulk_volume_fraction", "mean_velocity"):
+            row[k] = s.get(k)
+        rows.append(row)
+    return rows
 
 
 def steady(rows):

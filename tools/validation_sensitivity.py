@@ -5,6 +5,8 @@ Weinhart et al. 2012's Eq. 35 puts theta_stop at 22.74°) run again from two oth
 paper's t_c / 50), each to t = 500 under the arrest test of Sect. 6."""
 from pathlib import Path
 
+from validation_closures import kept_rows
+
 CASE = {"H": 8, "angle": 23}
 CONTACT_TIME = 0.0049711793850625635  # examples/chute.toml: k_n = 2e5, damping rate 50, m = 1 (Eqs. 5-6)
 VARIANTS = [("hstop_seed2", "filling seed 2", ["run.seed=2"]),
@@ -12,8 +14,16 @@ VARIANTS = [("hstop_seed2", "filling seed 2", ["run.seed=2"]),
             ("hstop_dt100", "seed 1, time step t_c / 100", ["run.time_step=%r" % (CONTACT_TIME / 100)])]
 
 
+# The base's damping convention (examples/chute_coefficient_damping.toml) on one steady flow of
+# the map, from the same filling.
+DAMPING_CASE = {"H": 10, "angle": 24}
+
+
 def STUDIES(study_class):
-    out = []
+    out = [study_class("damping_coefficient", "flowmap",
+                       ["--lambda", "1", "--heights", str(DAMPING_CASE["H"]), "--angles", str(DAMPING_CASE["angle"]),
+                        "--end-time", "500", "--average", "100"], ["sweep_runs.csv"],
+                       scenario="examples/chute_coefficient_damping.toml")]
     for name, _, sets in VARIANTS:
         options = ["--lambda", "1", "--heights", str(CASE["H"]), "--angles", str(CASE["angle"]), "--end-time", "500",
                    "--average", "20"]
@@ -27,7 +37,7 @@ def lines(chute_fits, staircase, base: Path):
     first = [r for r in staircase if r["H"] == CASE["H"] and r["angle"] == CASE["angle"]]
     rows = [("staircase (seed 1, t_c / 50)", first[0] if first else None)]
     for name, label, _ in VARIANTS:
-        found = chute_fits._read(str(base / "weinhart2012" / name / "sweep_runs.csv"))
+        found = kept_rows(chute_fits, base / "weinhart2012" / name)
         rows.append((label, found[0] if found else None))
     out = [f"**One realisation or the simulation?** H = {CASE['H']} at {CASE['angle']}° again:", "",
            "| run | outcome | arrest time | h (d) |", "|---|---|---|---|"]
@@ -38,4 +48,21 @@ def lines(chute_fits, staircase, base: Path):
         arrest = r.get("arrest_time")
         arrest = f"{arrest:.0f}" if arrest not in ("", None) else ""
         out.append(f"| {label} | {r['flow_state']} | {arrest} | {r['h']:.2f} |")
+    return out + [""] + damping_lines(chute_fits, base)
+
+
+def damping_lines(chute_fits, base: Path):
+    def case(study):
+        return [r for r in kept_rows(chute_fits, base / "weinhart2012" / study)
+                if r["H"] == DAMPING_CASE["H"] and r["angle"] == DAMPING_CASE["angle"]]
+    rows = [("rate 50 per unit reduced mass (chute.toml): 50 against the base", case("flowmap")),
+            ("coefficient 25 for every pair (Weinhart et al.'s code)", case("damping_coefficient"))]
+    out = [f"**The base's damping.** H = {DAMPING_CASE['H']} at {DAMPING_CASE['angle']}° from the same filling, to "
+           "t = 500, averaged over [400, 500]:", "", "| damping | state | h (d) | F | K | alpha |", "|---|---|---|---|---|---|"]
+    for label, found in rows:
+        if not found:
+            out.append(f"| {label} | not run yet | | | | |")
+            continue
+        r = found[0]
+        out.append(f"| {label} | {r['flow_state']} | {r['h']:.3f} | {r['froude']:.4f} | {r['K']:.3f} | {r['alpha']:.3f} |")
     return out + [""]
