@@ -675,7 +675,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
     hs = fits.get("hstop35")
     paper_hstop = {k: TABLE1[k] for k in ("A", "delta1", "delta2")}
     map_lines, flow_rules, map_figure = validation_closures.section(
-        chute_fits, flowmap, long_runs, hs["params"] if hs else None, determined(hs), paper_hstop, base)
+        chute_fits, flowmap, long_runs, hs["params"] if hs else None, determined(hs), paper_hstop, base, staircase)
     fr = flow_rules["talus"]
     max_h = max((r["H"] for r in staircase), default=0)
     table = {"lambda": 1}

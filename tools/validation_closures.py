@@ -133,9 +133,11 @@ def pm(v, e, digits=4):
     return f"{v:.{digits}g} ± {e:.2g}" if math.isfinite(e) else f"{v:.{digits}g}"
 
 
-def section(chute_fits, flowmap, long_rows, hs_talus, talus_determined, paper_hstop, base: Path):
+def section(chute_fits, flowmap, long_rows, hs_talus, talus_determined, paper_hstop, base: Path, near_stop=()):
     """The report's lines on the flow map, the fits for table1.json ({"talus": block or None,
-    "paper_hstop": block or None}) and the figure's path (None without steady flows)."""
+    "paper_hstop": block or None}) and the figure's path (None without steady flows). near_stop:
+    the staircase's cases, whose steady flows near h_stop the figure shows as Fig. 11's dots (not
+    fitted: they ran to t = 500 with a 20-unit average)."""
     rows = steady(flowmap)
     lines = [f"**The flow map** (Sects. 7 and 9): {len(flowmap)} of its 16 cases (H = 10, 20, 30, 40; theta = 22, "
              "24, 26, 28°) have run, to t = 500, with depth profiles averaged over t in [400, 500]. "
@@ -168,6 +170,14 @@ def section(chute_fits, flowmap, long_rows, hs_talus, talus_determined, paper_hs
                 lines.append(f"| {label} | | not determined | | |")
         lines += ["", "Weinhart et al. 2012, Table 1: beta = 0.196, gamma = 0.040, err(F) = 0.121 (over all its "
                   "steady flows, H = 10 to 40).", ""]
+    near = steady(near_stop)
+    if len(near) >= 2:
+        x = np.array([r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop)) for r in near])
+        d = np.array([r["froude"] for r in near]) - (0.196 * x - 0.040)
+        lines += [f"The staircase's {len(near)} steady flows near h_stop (h / h_stop = {x.min():.2f} to {x.max():.2f} "
+                  f"on Table 1's curve; t = 500, 20-unit averages) lie off Table 1's flow rule by {d.mean():+.3f} ± "
+                  f"{d.std(ddof=1) / math.sqrt(len(d)):.3f} in F on average (the paper's err(F) over its steady flows "
+                  "is 0.121).", ""]
     close = closures(chute_fits, rows, paper_hstop)
     if close:
         lines += ["Closures (Sect. 9.2) over the same steady flows: each one's fit where the cases determine it, "
@@ -198,12 +208,11 @@ def section(chute_fits, flowmap, long_rows, hs_talus, talus_determined, paper_hs
         lines.append("")
     else:
         lines += ["None has finished yet: until one has, the shorter runs are not shown to be long enough.", ""]
-    figure = plot(chute_fits, flowmap, fits, paper_hstop, hs_talus if talus_determined else None,
-                  base / "weinhart2012") if rows else None
+    figure = plot(chute_fits, flowmap, fits, paper_hstop, base / "weinhart2012", steady(near_stop)) if rows else None
     return lines, fits, figure
 
 
-def plot(chute_fits, flowmap, fits, paper_hstop, hs_talus, out: Path):
+def plot(chute_fits, flowmap, fits, paper_hstop, out: Path, near_stop=()):
     """Fig. 11 (F against h / h_stop) and Figs. 12-13's closures against theta."""
     import matplotlib
     matplotlib.use("Agg")
@@ -213,6 +222,9 @@ def plot(chute_fits, flowmap, fits, paper_hstop, hs_talus, out: Path):
     x = np.array([r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop)) for r in rows])
     F = np.array([r["froude"] for r in rows])
     ax = axes[0]
+    if near_stop:
+        ax.plot([r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop)) for r in near_stop],
+                [r["froude"] for r in near_stop], "k.", label="Talus, h_stop staircase (steady at t = 500)")
     for H in sorted({r["H"] for r in rows}):
         pick = [i for i, r in enumerate(rows) if r["H"] == H]
         ax.plot(x[pick], F[pick], "o", label=f"Talus, H = {H:g}")
