@@ -14,7 +14,7 @@ VARIANTS = [("hstop_seed2", "filling seed 2", ["run.seed=2"]),
             ("hstop_dt100", "seed 1, time step t_c / 100", ["run.time_step=%r" % (CONTACT_TIME / 100)])]
 
 
-# The base's damping convention (examples/chute_coefficient_damping.toml) on one steady flow of
+# The base's damping convention (validation/weinhart2012/chute_coefficient_damping.toml) on one steady flow of
 # the map, from the same filling.
 DAMPING_CASE = {"H": 10, "angle": 24}
 
@@ -23,7 +23,7 @@ def STUDIES(study_class):
     out = [study_class("damping_coefficient", "flowmap",
                        ["--lambda", "1", "--heights", str(DAMPING_CASE["H"]), "--angles", str(DAMPING_CASE["angle"]),
                         "--end-time", "500", "--average", "100"], ["sweep_runs.csv"],
-                       scenario="examples/chute_coefficient_damping.toml")]
+                       scenario="validation/weinhart2012/chute_coefficient_damping.toml")]
     for name, _, sets in VARIANTS:
         options = ["--lambda", "1", "--heights", str(CASE["H"]), "--angles", str(CASE["angle"]), "--end-time", "500",
                    "--average", "20"]
