@@ -110,7 +110,7 @@ CHUTE_STUDIES = [
                                       "--end-time", "500", "--average", "100"], ["sweep_runs.csv"]),
     ChuteStudy("flowmap_long", "flowmap", ["--lambda", "1", "--heights", "10,20", "--angles", "24",
                                            "--end-time", "2000", "--average", "100"], ["sweep_runs.csv"]),
-] + validation_sensitivity.STUDIES(ChuteStudy)
+] + validation_sensitivity.studies(ChuteStudy)
 CHUTE_CASE_FILES = ["summary.json", "chute_profile.csv", "chute_series.csv"]
 # Weinhart et al. 2012, Table 1, lambda = 1, and the agreement issue 26 asks for.
 TABLE1 = {"delta1": 17.708, "delta2": 32.780, "A": 3.355, "beta": 0.196, "gamma": 0.040}

@@ -19,7 +19,7 @@ VARIANTS = [("hstop_seed2", "filling seed 2", ["run.seed=2"]),
 DAMPING_CASE = {"H": 10, "angle": 24}
 
 
-def STUDIES(study_class):
+def studies(study_class):
     out = [study_class("damping_coefficient", "flowmap",
                        ["--lambda", "1", "--heights", str(DAMPING_CASE["H"]), "--angles", str(DAMPING_CASE["angle"]),
                         "--end-time", "500", "--average", "100"], ["sweep_runs.csv"],
