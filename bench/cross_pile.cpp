@@ -18,7 +18,7 @@ namespace talus::bench {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr std::uint32_t kVersion = 1;  // of the generation recipe below: bump when it changes
+constexpr std::uint32_t kVersion = 2;  // of the generation recipe below (and of the cross's inertia): bump when it changes
 
 CrossBoxSetup pile_setup(const CrossPileOptions& o) {
   CrossBoxSetup s;
@@ -26,6 +26,7 @@ CrossBoxSetup pile_setup(const CrossPileOptions& o) {
   s.box = {0.2, 0.2, 0.05};     // 20 x 20 cm floor
   s.domain_hi = {1.0, 0.2, 1.0};  // room for the flow past x = 0.2 m
   s.narrow_phase_reuse = o.narrow_phase_reuse;
+  s.manifold_refit = o.manifold_refit;
   return s;
 }
 
@@ -92,6 +93,7 @@ void run_cross_pile(const CrossPileOptions& o, void (*metric)(const char*, doubl
     const CompositeStats st = composite_stats_total();  // of that profile run
     const double q = static_cast<double>(st.box_full_queries + st.box_reused);
     metric("crosspile_reuse_share", q > 0 ? st.box_reused / q : 0.0, "fraction");
+    metric("crosspile_refit_share", q > 0 ? st.box_refit / q : 0.0, "fraction");
   }
   if (o.static_only) return;
   // Flowing: the x+ wall goes, the pile slumps out of the box.

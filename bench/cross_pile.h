@@ -14,6 +14,7 @@ struct CrossPileOptions {
   int reps = 8;                    ///< repetitions of each timing (the fastest is kept)
   bool static_only = false;        ///< skip the flowing state (quick comparisons)
   bool narrow_phase_reuse = true;  ///< WorldSettings::narrow_phase_reuse (off: the A/B reference)
+  double manifold_refit = 0;       ///< WorldSettings::manifold_refit (0: clip every step)
   double settle_speed = 3e-2;      ///< m/s: settled below this largest speed (surface crosses creep at 1-3 cm/s)
   double settle_time_limit = 1.5;  ///< s of simulated time
   std::filesystem::path cache;     ///< directory of the cached settled pile

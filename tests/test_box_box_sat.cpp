@@ -10,9 +10,12 @@
 #include <random>
 
 #include "talus/collide/box_box.h"
+#include "test_random_poses.h"
 
 namespace talus {
 namespace {
+
+using testing::random_rotation;
 
 // The plain test: every axis normalised, same tie rules as box_box_sat (no warm start).
 struct Plain {
@@ -58,11 +61,6 @@ Plain plain_sat(const OrientedBox& a, const OrientedBox& b) {
     if (valid[k] && overlap[k] < overlap[best] - (k < 6 ? 0.0 : margin)) best = k;
   r.axis = best, r.depth = overlap[best];
   return r;
-}
-
-Quat random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0, 1);
-  return Quat{n(rng), n(rng), n(rng), n(rng)}.normalized();
 }
 
 TEST(BoxBoxSat, AgreesWithThePlainFifteenAxisTest) {

@@ -2,7 +2,9 @@
 // feature gives the full query's contact to the bit while its reserve lasts, and runs the full
 // query as soon as its motion has spent the reserve. In a World, reuse on and off give the same
 // run (the stated tolerance is zero), a box resting on a box under tilted gravity sticks, and an
-// elastic collision of boxes conserves energy as without reuse.
+// elastic collision of boxes conserves energy as without reuse. The refit of face points on top
+// (contact.manifold_refit) is bounded by its margin, keeps a resting box stuck and its energy,
+// and leaves a slumping pile's runout within the scatter of its realisations.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -19,23 +21,17 @@
 #include "talus/world/box_pair_reuse.h"
 #include "talus/world/composite_stats.h"
 #include "talus/world/world.h"
+#include "test_random_poses.h"
 
 namespace talus {
 namespace {
 
+using testing::random_rotation;
+using testing::random_unit;
+
 const double kPi = std::acos(-1.0);
 const Vec3 kArm{13.5e-3, 1e-3, 1.5e-3};  // a Huet cross arm's half extents (m)
 constexpr double kRadius = 13.6e-3;      // bounding radius of the cross the arm belongs to (m)
-
-Quat random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0, 1);
-  return Quat{n(rng), n(rng), n(rng), n(rng)}.normalized();
-}
-
-Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0, 1);
-  return normalized_or_zero(Vec3{n(rng), n(rng), n(rng)});
-}
 
 void expect_same_manifold(const ContactManifold& a, const ContactManifold& b, int trial, int step) {
   ASSERT_EQ(a.count, b.count) << "trial " << trial << " step " << step;
@@ -163,25 +159,19 @@ struct PileRun {
   CompositeStats stats;
 };
 
-// 40 crosses dropped in a 6 x 6 cm box with the x+ wall gone after 30 ms, so that they land,
-// pile and slump: falls, impacts and lasting contacts.
-PileRun cross_pile(bool reuse, int threads) {
-  CrossBoxSetup setup;
-  setup.count = 40;
-  setup.box = {0.06, 0.06, 0.03};
-  setup.domain_hi = {0.2, 0.06, 0.2};
-  setup.narrow_phase_reuse = reuse;
+// Crosses poured into a box, left `settle` steps, then its x+ wall goes for `slump` steps.
+PileRun cross_pile(const CrossBoxSetup& setup, int threads, unsigned long settle, unsigned long slump) {
   auto w = make_cross_box_world(setup);
   fill_cross_box(*w, setup);
   const int saved = omp_get_max_threads();
   omp_set_num_threads(threads);
   reset_composite_stats();
   set_composite_stats_enabled(true);
-  w->run(8000);
+  w->run(settle);
   Wall& side = w->walls_mutable()[1];
   side.motion.kind = WallMotion::Kind::removed;
   side.motion.start_time = w->time();
-  w->run(8000);
+  w->run(slump);
   set_composite_stats_enabled(false);
   omp_set_num_threads(saved);
   const ParticleStore& p = w->particles();
@@ -194,6 +184,18 @@ PileRun cross_pile(bool reuse, int threads) {
     r.orientation.push_back(p.orientation[i]);
   }
   return r;
+}
+
+// 40 crosses dropped in a 6 x 6 cm box with the x+ wall gone after 20 ms, so that they land,
+// pile and slump: falls, impacts and lasting contacts.
+PileRun cross_pile(bool reuse, int threads) {
+  CrossBoxSetup setup;
+  setup.count = 40;
+  setup.box = {0.06, 0.06, 0.03};
+  setup.domain_hi = {0.2, 0.06, 0.2};
+  setup.narrow_phase_reuse = reuse;
+  setup.manifold_refit = 0;  // the exact reuse alone
+  return cross_pile(setup, threads, 8000, 8000);
 }
 
 // The stated tolerance of reuse is zero: the same bits with reuse on (two threads) and off (one).
@@ -209,8 +211,8 @@ TEST(NarrowPhaseReuse, SameRunWithReuseOnAndOff) {
   }
   const double share =
       static_cast<double>(on.stats.box_reused) / static_cast<double>(on.stats.box_reused + on.stats.box_full_queries);
-  std::printf("reuse share %.3f (%llu served, %llu full queries; off: %llu full queries)\n", share,
-              static_cast<unsigned long long>(on.stats.box_reused),
+  std::printf("reuse share %.3f (%llu served, %llu refit, %llu full queries; off: %llu full queries)\n", share,
+              static_cast<unsigned long long>(on.stats.box_reused), static_cast<unsigned long long>(on.stats.box_refit),
               static_cast<unsigned long long>(on.stats.box_full_queries),
               static_cast<unsigned long long>(off.stats.box_full_queries));
   EXPECT_GT(on.stats.box_reused, 0u);
@@ -225,12 +227,13 @@ struct TwoBoxes {
 
 // A 1 cm cube (density 1000) on a fixed 10 x 10 x 2 cm slab, gravity g tilted by `tilt` about y.
 TwoBoxes cube_on_slab(bool reuse, double tilt, double restitution, double friction, const Vec3& velocity,
-                      const Vec3& spin, double height) {
+                      const Vec3& spin, double height, double refit = 0) {
   WorldSettings s;
   s.domain = {{-1, -1, -1}, {1, 1, 1}};
   s.gravity = Vec3{std::sin(tilt), 0, -std::cos(tilt)} * 9.81;
   s.contact_manifold = true;
   s.narrow_phase_reuse = reuse;
+  s.manifold_refit = refit;
   CompositeShape cube, slab;
   cube.add(make_box({0.005, 0.005, 0.005}, 2e-4), Pose{});
   slab.add(make_box({0.05, 0.05, 0.01}, 2e-4), Pose{});
@@ -306,6 +309,123 @@ TEST(NarrowPhaseReuse, ElasticImpactEnergyUnchanged) {
   }
   EXPECT_EQ(ratio[0], ratio[1]);
   EXPECT_NEAR(ratio[1], 1.0, 0.05);
+}
+
+// The refit's bound: after a clip at travel T with margin m, points are refit while the travels
+// sum to less than T + m, never past the axis' own bound, and the float slack errs towards
+// clipping sooner (by at most 2^-23 of the slack).
+TEST(ManifoldRefit, MarginBoundsTheTravelOfARefit) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 10000; ++trial) {
+    const double travelled = 10 * u(rng), reserve = 1e-3 * u(rng), margin = 1e-3 * u(rng) * u(rng);
+    PartBudget budget{travelled + reserve, 3};
+    EXPECT_FALSE(budget.refit_allowed(travelled)) << "no refit before a clip";
+    budget.allow_refit(travelled, margin);
+    const double bound = budget.until - static_cast<double>(budget.refit_slack);
+    const double wanted = std::min(travelled + margin, budget.until);
+    ASSERT_LE(bound, wanted) << "trial " << trial;
+    ASSERT_GE(bound, wanted - 2.4e-7 * (budget.until - wanted) - 4e-16 * budget.until) << "trial " << trial;
+    EXPECT_EQ(budget.refit_allowed(bound), false);
+    budget.allow_refit(travelled, 0);
+    EXPECT_FALSE(budget.refit_allowed(travelled)) << "a zero margin refits nothing";
+  }
+}
+
+// A cube at rest on a slab under gravity tilted by 10 degrees, with the largest refit margin a
+// scenario accepts: its four points (vertices of the cube, refit to the bit) are refit on most
+// steps, and it sticks as without the refit.
+TEST(ManifoldRefit, RestingCubeStaysStuck) {
+  TwoBoxes t = cube_on_slab(true, 10 * kPi / 180, 0.3, 0.5, {}, {}, 0.0052, 0.5);
+  World& w = *t.world;
+  while (w.time() < 1.0) w.run(1000);
+  const Vec3 settled = w.particles().position[1];
+  reset_composite_stats();
+  set_composite_stats_enabled(true);
+  while (w.time() < 1.5) w.run(1000);
+  set_composite_stats_enabled(false);
+  const CompositeStats stats = composite_stats_total();
+  const double drift = norm(w.particles().position[1] - settled);
+  std::printf("refit 0.5: drift over 0.5 s %.3g m, %llu served (%llu refit), %llu full queries\n", drift,
+              static_cast<unsigned long long>(stats.box_reused), static_cast<unsigned long long>(stats.box_refit),
+              static_cast<unsigned long long>(stats.box_full_queries));
+  EXPECT_LT(drift, 1e-12);
+  EXPECT_GT(stats.box_refit, stats.box_reused / 2);
+}
+
+// A cube thrown spinning onto the slab, no friction, no damping (as ElasticImpactEnergyUnchanged),
+// and one dropped tilted that lands on an edge and turns onto its face: with the refit, the turn
+// past the margin brings the clip back, which finds the points coming down, so the cube ends
+// face down on four points as without the refit; the energy after the bounce is the exact
+// reuse's within 1 % (the manifold's own drift is 5 %).
+TEST(ManifoldRefit, TurningCubeFindsItsPointsAndKeepsItsEnergy) {
+  double ratio[2] = {0, 0};
+  for (int refit = 0; refit < 2; ++refit) {
+    TwoBoxes t = cube_on_slab(true, 0, 1.0, 0.0, {0.05, 0.02, -0.3}, {3, -2, 1}, 0.0058, refit ? 0.5 : 0.0);
+    World& w = *t.world;
+    w.set_gravity({});
+    const Diagnostics d0 = w.diagnostics();
+    w.run(4000);
+    const Diagnostics d1 = w.diagnostics();
+    ASSERT_EQ(d1.contacts, 0u) << "the cube is still touching";
+    ratio[refit] = (d1.kinetic() + d1.elastic()) / (d0.kinetic() + d0.elastic());
+    std::printf("refit %d: E after / E before = %.12f\n", refit, ratio[refit]);
+  }
+  EXPECT_NEAR(ratio[1], ratio[0], 0.01);
+  std::size_t points[2] = {0, 0};
+  Vec3 rest[2];
+  for (int refit = 0; refit < 2; ++refit) {
+    TwoBoxes t = cube_on_slab(true, 0, 0.3, 0.5, {}, {0, 0, 0}, 0.0052, refit ? 0.5 : 0.0);
+    World& w = *t.world;
+    reset_composite_stats();
+    set_composite_stats_enabled(true);
+    while (w.time() < 0.5) w.run(1000);
+    set_composite_stats_enabled(false);
+    points[refit] = w.diagnostics().contacts;
+    rest[refit] = w.particles().position[1];
+    const CompositeStats stats = composite_stats_total();
+    std::printf("refit %d: %zu points at rest, %llu refit of %llu served\n", refit, points[refit],
+                static_cast<unsigned long long>(stats.box_refit), static_cast<unsigned long long>(stats.box_reused));
+    if (refit) EXPECT_GT(stats.box_refit, 0u);
+  }
+  EXPECT_EQ(points[1], points[0]);
+  EXPECT_LT(norm(rest[1] - rest[0]), 1e-7);  // of a 1 cm cube
+}
+
+// 60 crosses poured into a 5 x 6 cm box and left to settle for 50 ms, then its x+ wall goes:
+// the front of the slump 0.1 s later, over three fillings, with the largest refit margin
+// against clipping every step. The two means must agree within twice the standard error of
+// their difference (the ensemble scatter of three realisations), and both must slump.
+TEST(ManifoldRefit, SlumpingPileRunsOutAsWithoutRefit) {
+  double front[2][3];
+  unsigned long long refits = 0, served = 0;
+  const Vec3 box{0.05, 0.06, 0.03};
+  for (int refit = 0; refit < 2; ++refit)
+    for (int seed = 0; seed < 3; ++seed) {
+      CrossBoxSetup setup;
+      setup.count = 60;
+      setup.box = box;
+      setup.domain_hi = {0.3, 0.06, 0.2};
+      setup.seed = 1 + seed;
+      setup.manifold_refit = refit ? 0.5 : 0.0;
+      const PileRun run = cross_pile(setup, 1, 20000, 40000);
+      if (refit) refits += run.stats.box_refit, served += run.stats.box_reused;
+      double x = 0;
+      for (const Vec3& r : run.position) x = std::max(x, r.x);
+      front[refit][seed] = x;
+    }
+  double mean[2], var[2];
+  for (int r = 0; r < 2; ++r) {
+    mean[r] = (front[r][0] + front[r][1] + front[r][2]) / 3;
+    var[r] = 0;
+    for (double x : front[r]) var[r] += (x - mean[r]) * (x - mean[r]) / 2;
+    std::printf("refit %d: fronts %.4f %.4f %.4f m, mean %.4f +- %.4f\n", r, front[r][0], front[r][1], front[r][2],
+                mean[r], std::sqrt(var[r] / 3));
+    EXPECT_GT(mean[r], box.x + 0.005) << "refit " << r << ": no slump";
+  }
+  std::printf("%llu refits of %llu served\n", refits, served);
+  EXPECT_GT(refits, 0u);
+  EXPECT_LT(std::abs(mean[1] - mean[0]), 2 * std::sqrt((var[0] + var[1]) / 3));
 }
 
 }  // namespace

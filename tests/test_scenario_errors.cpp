@@ -65,10 +65,13 @@ TEST(ScenarioErrors, UnknownKeyIsReportedWithSuggestion) {
   EXPECT_NE(e.find("contact.friction"), std::string::npos) << e;
 }
 
-TEST(ScenarioErrors, NarrowPhaseReuseIsABoolean) {
+TEST(ScenarioErrors, NarrowPhaseReuseIsABooleanAndRefitAFraction) {
   const std::string e = load_error(replace(kValid, "friction = 0.5", "friction = 0.5\nnarrow_phase_reuse = 3"));
   EXPECT_EQ(e.rfind("case.toml:17: contact.narrow_phase_reuse", 0), 0u) << e;
   EXPECT_EQ(load_error(replace(kValid, "friction = 0.5", "friction = 0.5\nnarrow_phase_reuse = false")), "");
+  const std::string refit = load_error(replace(kValid, "friction = 0.5", "friction = 0.5\nmanifold_refit = 0.8"));
+  EXPECT_EQ(refit.rfind("case.toml:17: contact.manifold_refit", 0), 0u) << refit;
+  EXPECT_EQ(load_error(replace(kValid, "friction = 0.5", "friction = 0.5\nmanifold_refit = 0.1")), "");
 }
 
 // A key the reader knows but the chosen contact models do not read is said to be so, with why,

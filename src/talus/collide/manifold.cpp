@@ -1,6 +1,7 @@
 #include "talus/collide/manifold.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <vector>
 
@@ -147,6 +148,80 @@ ContactManifold box_box_manifold(const OrientedBox& a, const OrientedBox& b, con
     pts[n++] = ref_is_a ? make_point(on_ref, cv.p, depth, id) : make_point(cv.p, on_ref, depth, id);
   }
   return reduce(pts.data(), static_cast<std::size_t>(n), sat.normal, ContactMethod::kBoxBoxSat);
+}
+
+bool box_box_refit(const OrientedBox& a, const OrientedBox& b, const std::uint32_t* ids, int count,
+                   ContactManifold& out) {
+  out.count = 0;
+  out.method = ContactMethod::kBoxBoxSat;
+  if (count < 1 || count > 4) return false;
+  const std::uint32_t faces = ids[0] >> 16;
+  const int ref_face = static_cast<int>(faces >> 8), inc_face = static_cast<int>(faces & 0xFF);
+  if (ref_face >= 12 || inc_face >= 12 || (ref_face < 6) == (inc_face < 6)) return false;
+  // The frames of box_box_manifold, from the two face ids instead of the SAT axis.
+  const bool ref_is_a = ref_face < 6;
+  const OrientedBox& ref = ref_is_a ? a : b;
+  const OrientedBox& inc = ref_is_a ? b : a;
+  const int rk = (ref_face % 6) / 2;
+  const Vec3 m = ref_face % 2 == 0 ? ref.axis[rk] : -ref.axis[rk];
+  const double ref_offset = dot(m, ref.centre) + ref.half[rk];
+  const int ik = (inc_face % 6) / 2;
+  const double sgn = inc_face % 2 == 0 ? 1.0 : -1.0;
+  const int k1 = (ik + 1) % 3, k2 = (ik + 2) % 3;
+  const Vec3 c = inc.centre + inc.axis[ik] * (sgn * inc.half[ik]);
+  const Vec3 u = inc.axis[k1] * inc.half[k1], v = inc.axis[k2] * inc.half[k2];
+  const Vec3 corner[4] = {c + u + v, c - u + v, c - u - v, c + u - v};
+  // Side plane p (bit p of the mask): the clip's order, the two other axes of ref ascending, + then -.
+  const auto side = [&](int p, Vec3& n, double& w) {
+    int k = p / 2;
+    if (k >= rk) ++k;
+    n = ref.axis[k] * (p % 2 == 0 ? 1.0 : -1.0);
+    w = dot(n, ref.centre) + ref.half[k];
+  };
+  out.normal = ref_is_a ? -m : m;
+  for (int q = 0; q < count; ++q) {
+    if (ids[q] >> 16 != faces) return false;
+    const unsigned edges = (ids[q] >> 8) & 0xFFu, planes = ids[q] & 0xFFu;
+    if (edges > 0xFu || planes > 0xFu) return false;
+    Vec3 p;
+    const int edge_bits = std::popcount(edges), plane_bits = std::popcount(planes);
+    if (edge_bits == 2 && plane_bits == 0) {
+      // Vertex q lies on edges q - 1 and q.
+      const int vertex = edges == 0b1001u ? 0 : std::countr_zero(edges) + 1;
+      if (edges != 0b1001u && edges != 3u << (vertex - 1)) return false;
+      p = corner[vertex];
+    } else if (edge_bits == 1 && plane_bits == 1) {
+      const int e = std::countr_zero(edges);
+      const Vec3& from = corner[e];
+      const Vec3 along = corner[(e + 1) % 4] - from;
+      Vec3 n;
+      double w;
+      side(std::countr_zero(planes), n, w);
+      const double slope = dot(n, along);
+      if (!(std::abs(slope) > 1e-12 * norm(along))) return false;
+      p = from + along * ((w - dot(n, from)) / slope);
+    } else if (edge_bits == 0 && plane_bits == 2) {
+      // The line where two side planes meet, along the reference normal, through the incident face.
+      Vec3 n1, n2;
+      double w1, w2;
+      const int p1 = std::countr_zero(planes);
+      side(p1, n1, w1);
+      side(std::countr_zero(planes & (planes - 1)), n2, w2);
+      if (std::abs(dot(n1, n2)) > 0.5) return false;  // opposite planes do not meet
+      const Vec3 on_line = ref.centre + n1 * (w1 - dot(n1, ref.centre)) + n2 * (w2 - dot(n2, ref.centre));
+      const Vec3& face_normal = inc.axis[ik];
+      const double slope = dot(face_normal, m);
+      if (!(std::abs(slope) > 1e-6)) return false;
+      p = on_line + m * (dot(face_normal, c - on_line) / slope);
+    } else {
+      return false;
+    }
+    const double depth = ref_offset - dot(m, p);
+    if (depth < 0) continue;
+    const Vec3 on_ref = p + m * depth;
+    out.points[out.count++] = ref_is_a ? make_point(on_ref, p, depth, ids[q]) : make_point(p, on_ref, depth, ids[q]);
+  }
+  return true;
 }
 
 ContactManifold box_box_manifold(const Vec3& ha, const Pose& pa, const Vec3& hb, const Pose& pb, const BoxBoxSat& sat) {

@@ -50,6 +50,16 @@ inline ManifoldPoint box_box_edge_point(const OrientedBox& a, const OrientedBox&
 }
 ContactManifold box_box_manifold(const Vec3& half_a, const Pose& pose_a, const Vec3& half_b, const Pose& pose_b,
                                  const BoxBoxSat& sat);
+// The points of a face manifold rebuilt from their feature ids alone, on the boxes as they are
+// now: each id names an incident vertex, an incident edge and a reference side plane, or two side
+// planes (their line met by the incident face), so each point is one vertex, one line-plane or
+// one line-face intersection instead of a clip of the incident face. While the clip's outcome
+// keeps these features the points are box_box_manifold's (vertices to the bit, intersections to
+// rounding); points that no longer overlap are dropped, as the clip drops them. Points it would
+// add are not found: the caller runs the clip again after a bounded motion (box_pair_reuse.h).
+// False when the ids do not name such points of one reference and one incident face.
+bool box_box_refit(const OrientedBox& a, const OrientedBox& b, const std::uint32_t* feature_ids, int count,
+                   ContactManifold& out);
 // `placed`, when given, is `a` as a placed box (the caller's axes of pose_a): corners clearly
 // above the plane are then skipped before they are placed; the points are the same to the bit.
 ContactManifold convex_plane_manifold(const ConvexShape& a, const Pose& pose_a, const HalfSpace& plane,

@@ -54,7 +54,9 @@ void free_rotation(Quat& q, Vec3& l, const Vec3& inv_i, double dt) {
   const int a = (c + 1) % 3, b = (c + 2) % 3;
   const double inv_sym = inv_i[a], coef_b = inv_i[b] - inv_sym, coef_c = inv_i[c] - inv_sym;
 
-  turn_about_axis(q, l, b, coef_b, 0.5 * dt);
+  // An axisymmetric body (equal moments, not merely close: mass_properties) has no residual.
+  const bool residual = coef_b != 0;
+  if (residual) turn_about_axis(q, l, b, coef_b, 0.5 * dt);
   // Symmetric top |L|^2 / (2 I_a) + coef_c L_c^2 / 2: the two terms commute, so its exact flow
   // is a turn by |L| dt / I_a about L itself (which leaves L_b unchanged) and a turn about e_c.
   const double l_norm = norm(l);
@@ -65,7 +67,7 @@ void free_rotation(Quat& q, Vec3& l, const Vec3& inv_i, double dt) {
     q = turn(q, l / l_norm, ch, sh);
   }
   turn_about_axis(q, l, c, coef_c, dt);
-  turn_about_axis(q, l, b, coef_b, 0.5 * dt);
+  if (residual) turn_about_axis(q, l, b, coef_b, 0.5 * dt);
   q = q.normalized();
 }
 

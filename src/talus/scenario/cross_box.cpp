@@ -30,6 +30,7 @@ std::unique_ptr<World> make_cross_box_world(const CrossBoxSetup& setup) {
   s.time_step = 2.5e-6;  // Huet et al. 2021, Table I
   s.contact_manifold = setup.manifold;
   s.narrow_phase_reuse = setup.narrow_phase_reuse;
+  s.manifold_refit = setup.manifold_refit;
   auto w = std::make_unique<World>(s);
   ContactParams c;  // Huet et al. 2021, Table I
   c.normal_stiffness = 4.5e5;

@@ -24,6 +24,7 @@ struct CrossBoxSetup {
   std::uint64_t seed = 1;
   bool manifold = true;          ///< up to 4 points per face contact (k/n each)
   bool narrow_phase_reuse = true;///< WorldSettings::narrow_phase_reuse
+  double manifold_refit = 0;     ///< WorldSettings::manifold_refit
 };
 
 RigidBodyType huet_cross_type(double crust = 1e-4);

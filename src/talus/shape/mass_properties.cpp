@@ -26,6 +26,14 @@ MassProperties finish(const Moments& m, double density) {
   mp.inertia = c.trace() * Matrix3d::Identity() - c;
   const Eigen::SelfAdjointEigenSolver<Matrix3d> eig(0.5 * (mp.inertia + mp.inertia.transpose()));
   mp.principal_moments = {eig.eigenvalues()(0), eig.eigenvalues()(1), eig.eigenvalues()(2)};
+  // Moments that differ by round-off only are equal: a body with a symmetry axis (a cross, a
+  // cylinder) then turns as the exact symmetric top, with no residual flow made of round-off
+  // (rigid_rotation.h), and a body of cubic symmetry as an isotropic one.
+  Vec3& moments = mp.principal_moments;
+  const double round_off = 1e-12 * moments[2];
+  for (int k = 0; k < 2; ++k)
+    if (moments[k + 1] - moments[k] <= round_off) moments[k] = moments[k + 1] = 0.5 * (moments[k] + moments[k + 1]);
+  if (moments[2] - moments[0] <= round_off) moments[0] = moments[1] = moments[2];
   Matrix3d axes = eig.eigenvectors();
   if (axes.determinant() < 0) axes.col(2) = -axes.col(2);  // proper rotation
   const Eigen::Quaterniond q(axes);

@@ -12,6 +12,15 @@
 //
 // Being exact, reuse changes no result: a restart (whose budgets start empty), another rank
 // count or `contact.narrow_phase_reuse = false` give the same bits, and nothing is checkpointed.
+//
+// One approximation goes on top (`contact.manifold_refit`, a fraction f): a face contact that
+// keeps its axis also keeps the features its points were clipped from, and rebuilds each point
+// from them (box_box_refit: a vertex, an edge-plane or a line-face intersection) instead of
+// clipping the incident face again, until the bodies have travelled f times the deepest overlap
+// since the clip. The points are the clip's while its outcome keeps those features; a point the
+// clip would add in the meantime (a vertex coming down through the reference face) is missed,
+// with an overlap below the motion since the clip, about 2 f of the deepest. f = 0 (the
+// default) keeps reuse exact; edge-edge contacts are always exact.
 #include "talus/collide/box_box.h"
 #include "talus/world/pair_budgets.h"
 
@@ -27,6 +36,20 @@ struct PairMotion {
 // holds a reserve for `stored_axis` (the axis of the pair's points of last step) not yet spent.
 inline bool feature_reusable(const PartBudget& budget, int stored_axis, double travelled) {
   return stored_axis >= 0 && stored_axis == budget.axis && travelled < budget.until;
+}
+
+// What a touching box pair may reuse: its stored feature (`on`) and, for a face contact, its
+// stored points for a travel of `refit` times their deepest overlap.
+struct Reuse {
+  bool on;
+  double refit;
+};
+
+// True while the stored points of a face contact may be refit rather than clipped: the axis is
+// still the SAT's answer and the travel since the clip is within the refit margin.
+inline bool refit_allowed(bool reuse, const PartBudget& budget, int stored_axis, double travelled) {
+  return reuse && stored_axis >= 0 && stored_axis < 6 && feature_reusable(budget, stored_axis, travelled) &&
+         budget.refit_allowed(travelled);
 }
 
 // The SAT of two touching boxes. With `reuse`, a lasting contact evaluates its stored axis alone

@@ -73,23 +73,49 @@ int touching_points(const ContactManifold& m, PointGeometry out[4]) {
   return n;
 }
 
+// The deepest overlap of a manifold's points.
+double deepest(const ContactManifold& m) {
+  double d = 0;
+  for (int k = 0; k < m.count; ++k) d = std::max(d, m.points[k].delta_n);
+  return d;
+}
+
+// How two boxes' points were found.
+enum class BoxQuery { full, stored_feature, refit };
+
 // Contact points of two placed convex parts: a manifold, or the single deepest point.
-// `previous` is this part pair's contact of last step (or null), for the warm start. With no
-// point, *gap is a lower bound of the parts' distance when the test found one, else 0.
-// *full_query says whether two boxes ran the full SAT (false: served from the stored feature).
+// [previous, previous_end) are this part pair's points of last step (empty: none), for the warm
+// start and the stored features. With no point, *gap is a lower bound of the parts' distance
+// when the test found one, else 0. *query says how two boxes' points were found.
 int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a, const CompositePart& b,
-                const PlacedPart& pb, const Quat& body_b, bool manifold, bool reuse, const SubContact* previous,
-                const PairMotion& motion, PartBudget& budget, PointGeometry out[4], double* gap, bool* full_query) {
+                const PlacedPart& pb, const Quat& body_b, bool manifold, const Reuse& reuse, const SubContact* previous,
+                const SubContact* previous_end, const PairMotion& motion, PartBudget& budget, PointGeometry out[4],
+                double* gap, BoxQuery* query) {
   *gap = 0;
-  *full_query = false;
+  *query = BoxQuery::stored_feature;
   ContactCache warm;
   if (previous) warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
   if (manifold) {
     // The manifold is read where it was returned: declaring it first and assigning it cost a
     // memset and a memmove of its ~400 bytes per touching part pair.
     if (pa.is_box && pb.is_box) {
-      const BoxBoxSat sat = lasting_box_sat(pa.box, pb.box, previous ? sat_axis_of(previous->feature) : -1, motion,
-                                            reuse, budget, full_query);
+      const int stored_axis = previous ? sat_axis_of(previous->feature) : -1;
+      if (refit_allowed(reuse.on, budget, stored_axis, motion.travelled)) {
+        UninitializedArray<std::uint32_t, 4> ids;
+        int n = 0;
+        for (const SubContact* s = previous; s != previous_end && n < 4 && s->part_i == previous->part_i &&
+                                             s->part_j == previous->part_j;
+             ++s)
+          ids[n++] = s->feature;
+        ContactManifold refit;
+        if (box_box_refit(pa.box, pb.box, ids.data(), n, refit)) {
+          *query = BoxQuery::refit;
+          return touching_points(refit, out);
+        }
+      }
+      bool full_query = false;
+      const BoxBoxSat sat = lasting_box_sat(pa.box, pb.box, stored_axis, motion, reuse.on, budget, &full_query);
+      if (full_query) *query = BoxQuery::full;
       if (sat.separated) {
         *gap = -sat.depth;
         return 0;
@@ -102,7 +128,9 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
         out[0] = {sat.normal, q.point, q.delta_n, q.feature_id};
         return 1;
       }
-      return touching_points(box_box_manifold(pa.box, pb.box, sat), out);
+      const ContactManifold clipped = box_box_manifold(pa.box, pb.box, sat);
+      if (reuse.on && reuse.refit > 0) budget.allow_refit(motion.travelled, reuse.refit * deepest(clipped));
+      return touching_points(clipped, out);
     }
     return touching_points(
         contact_manifold(a.shape, part_pose(pa, a, body_a), b.shape, part_pose(pb, b, body_b), &warm), out);
@@ -236,7 +264,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   gap = 0;
   constexpr bool profile = kProfile;  // the counters and clocks of the benchmark's profile, compiled out otherwise
   const std::uint64_t t_start = ticks(profile);
-  std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0, n_full = 0, n_reused = 0;
+  std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0, n_full = 0, n_reused = 0, n_refit = 0;
   const ParticleStore& p = particles_;
   thread_local CompositeShape scratch_i, scratch_j;
   const bool has_box_i = p.shape[i] != 0, has_box_j = p.shape[j] != 0;
@@ -266,7 +294,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   // A body turning by theta moves a point at its bounding radius R by 2 R sin(theta / 2) >= 2 R theta / pi.
   const PairMotion pair_motion{travelled, 0.5 * std::numbers::pi / std::min(p.radius[i], p.radius[j])};
   const bool had_contacts = !previous.empty();
-  const bool reuse = settings_.narrow_phase_reuse;
+  const Reuse reuse{settings_.narrow_phase_reuse, settings_.manifold_refit};
   const std::size_t first = contacts.size();
 
   ContactResult total;
@@ -290,7 +318,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
       // A touching box pair whose stored feature is still good overlaps: its capsules need no test.
       const SubContact* stored = nullptr;
       bool looked_up = false;
-      if (reuse && budget.axis >= 0 && had_contacts) {
+      if (reuse.on && budget.axis >= 0 && had_contacts) {
         stored = find_part_pair(previous, part_a, part_b);
         looked_up = true;
       }
@@ -311,10 +339,14 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
       t_cull += t1 - t0;
       UninitializedArray<PointGeometry, 4> points;
       double part_gap = 0;
-      bool full_query = false;
+      BoxQuery query = BoxQuery::stored_feature;
       const int n = part_points(shape_a, pa, p.orientation[i], shape_b, pb, p.orientation[j], settings_.contact_manifold,
-                                reuse, stored, pair_motion, budget, points.data(), &part_gap, &full_query);
-      if (profile && pa.is_box && pb.is_box && settings_.contact_manifold) ++(full_query ? n_full : n_reused);
+                                reuse, stored, previous.data() + previous.size(), pair_motion, budget, points.data(),
+                                &part_gap, &query);
+      if (profile && pa.is_box && pb.is_box && settings_.contact_manifold) {
+        ++(query == BoxQuery::full ? n_full : n_reused);
+        n_refit += query == BoxQuery::refit;
+      }
       least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
       if (n == 0 && part_gap > 0) budget.sleep(travelled, part_gap);
       const std::uint64_t t2 = ticks(profile);
@@ -350,6 +382,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
     st.points += n_points;
     st.box_full_queries += n_full;
     st.box_reused += n_reused;
+    st.box_refit += n_refit;
     st.cull_ticks += t_cull;
     st.narrow_ticks += t_narrow;
     st.force_ticks += t_force;

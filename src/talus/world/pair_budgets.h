@@ -7,7 +7,10 @@
 // pair in contact (two crosses touching by one arm) then still skips its part pairs that were
 // found apart, instead of running their capsule test and box SAT every step. Its touching box
 // pairs keep their SAT axis the same way (PartBudget::axis).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "talus/body/particles.h"
@@ -20,16 +23,30 @@ namespace talus {
 // axis < 0 the pair sleeps while the two bodies' travels sum to less than `until`; with axis >= 0
 // the parts touched and, being boxes, their SAT axis stays the SAT's answer until then
 // (box_box_axis_reserve). One 16-byte record per part pair: a cross pair's four share a line.
+// A touching pair's stored points may also be refit from their features, without the clip
+// (box_pair_reuse.h), while the travels sum to less than until - refit_slack: a float in the
+// record's padding, rounded up, so the bound errs towards clipping again.
 struct PartBudget {
   double until = 0;  ///< m, on the scale of PlacedBodies::travel
   std::int32_t axis = -1;
+  float refit_slack = std::numeric_limits<float>::infinity();  ///< m; infinite: no refit
 
   bool asleep(double travelled) const { return axis < 0 && travelled < until; }
   void sleep(double travelled, double gap) {
     axis = -1;
     until = travelled + gap;
   }
+  bool refit_allowed(double travelled) const { return travelled < until - static_cast<double>(refit_slack); }
+  // Points clipped at `travelled` may be refit until the travels have grown by `margin` more
+  // (and never past the axis' own bound).
+  void allow_refit(double travelled, double margin) {
+    const double slack = std::max(until - (travelled + margin), 0.0);
+    float rounded = static_cast<float>(slack);
+    if (static_cast<double>(rounded) < slack) rounded = std::nextafter(rounded, std::numeric_limits<float>::infinity());
+    refit_slack = rounded;
+  }
 };
+static_assert(sizeof(PartBudget) == 16);
 
 class PairBudgets {
  public:

@@ -38,6 +38,13 @@ struct WorldSettings {
   // the bodies' motion stays within that feature's reserve (box_pair_reuse.h). Exact: false
   // gives the same bits, slower; it exists for comparisons.
   bool narrow_phase_reuse = true;
+  // With reuse, a face contact's points are refit from their features (box_box_refit) while the
+  // two bodies have travelled less than this fraction of its deepest overlap since it was last
+  // clipped: a point the clip would add meanwhile is missed, with an overlap below about twice
+  // that fraction of the deepest. Off (0) by default: it is not exact, so a restart or another
+  // rank count (whose budgets start afresh) no longer gives the same bits, and at the overlaps
+  // of stiff grains (nanometres) the margin lasts a few steps and saves little.
+  double manifold_refit = 0;
   // Sphere worlds end each particle's step (closing half kick, next opening kick and drift)
   // inside the force pass, as soon as its force is complete; false runs them as separate passes
   // over all particles, the reference the fused form must equal to the bit.
