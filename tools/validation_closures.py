@@ -129,6 +129,33 @@ def length_check(flowmap, long_rows, base: Path):
     return out
 
 
+def rule_ratio_lines(chute_fits, rows, paper_hstop, base: Path, fit):
+    """Each steady flow's F over Table 1's flow rule at its h / h_stop: whether Talus' flows
+    fall short of the paper's by a shift (gamma) or by a factor (beta). `fit`: the flow rule
+    fitted with Table 1's h_stop."""
+    if not rows:
+        return []
+    cases = []
+    for r in sorted(rows, key=lambda r: r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop))):
+        x = r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop))
+        rule = 0.196 * x - 0.040
+        cases.append((r, x, r["froude"] / rule, froude_error(case_folder(base, "flowmap", r)) / rule))
+    listed = ", ".join(f"{c[2]:.2f} (H = {c[0]['H']:g}, {c[0]['angle']:g}°, h / h_stop = {c[1]:.2f})" for c in cases)
+    errs = [c[3] for c in cases if math.isfinite(c[3])]
+    below = sum(1 for c in cases if math.isfinite(c[3]) and c[2] < 1 - 3 * c[3])
+    text = f"Against Table 1's flow rule at each flow's own h / h_stop, F / F_Table1 = {listed}."
+    if errs:
+        text += (f" Each ratio's statistical error is at most {max(errs):.3f}; {below} of the {len(cases)} flows lie "
+                 "more than three of their errors below the rule.")
+    if fit:
+        g, g_se, b, b_se = fit["params"]["gamma"], fit["se"]["gamma"], fit["params"]["beta"], fit["se"]["beta"]
+        if g_se > 0 and b_se > 0:
+            zg, zb = abs(g - 0.040) / g_se, abs(b - 0.196) / b_se
+            text += (f" The fit's gamma is {zg:.1f} standard errors from Table 1's 0.040 and its beta {zb:.1f} from "
+                     f"0.196: the flows differ {'by a factor more than by a shift' if zb > zg else 'by a shift more than by a factor'}.")
+    return [text + " The sensitivity checks below test the base damping convention and the time step.", ""]
+
+
 def pm(v, e, digits=4):
     return f"{v:.{digits}g} ± {e:.2g}" if math.isfinite(e) else f"{v:.{digits}g}"
 
@@ -170,6 +197,7 @@ def section(chute_fits, flowmap, long_rows, hs_talus, talus_determined, paper_hs
                 lines.append(f"| {label} | | not determined | | |")
         lines += ["", "Weinhart et al. 2012, Table 1: beta = 0.196, gamma = 0.040, err(F) = 0.121 (over all its "
                   "steady flows, H = 10 to 40).", ""]
+        lines += rule_ratio_lines(chute_fits, rows, paper_hstop, base, fits["paper_hstop"])
     near = steady(near_stop)
     if len(near) >= 2:
         x = np.array([r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop)) for r in near])
