@@ -21,7 +21,7 @@ using testing::random_rotation;
 using testing::random_unit;
 
 const double kPi = std::acos(-1.0);
-const Vec3 kArm{13.5e-3, 1e-3, 1.5e-3};  // a Huet cross arm's half extents (m)
+using testing::kArm;
 
 std::vector<std::uint32_t> ids_of(const ContactManifold& m) {
   std::vector<std::uint32_t> ids;

@@ -30,7 +30,7 @@ using testing::random_rotation;
 using testing::random_unit;
 
 const double kPi = std::acos(-1.0);
-const Vec3 kArm{13.5e-3, 1e-3, 1.5e-3};  // a Huet cross arm's half extents (m)
+using testing::kArm;
 constexpr double kRadius = 13.6e-3;      // bounding radius of the cross the arm belongs to (m)
 
 void expect_same_manifold(const ContactManifold& a, const ContactManifold& b, int trial, int step) {
@@ -259,33 +259,45 @@ TwoBoxes cube_on_slab(bool reuse, double tilt, double restitution, double fricti
   return {std::move(w), c};
 }
 
+// The cube at rest on the slab under gravity tilted by 10 degrees: where it settled by t = 1 s,
+// where it is at t = 1.5 s, and the contact counters over that last half second.
+struct RestingCube {
+  Vec3 settled, end, velocity;
+  CompositeStats stats;
+};
+
+RestingCube resting_cube(bool reuse, double refit) {
+  TwoBoxes t = cube_on_slab(reuse, 10 * kPi / 180, 0.3, 0.5, {}, {}, 0.0052, refit);
+  World& w = *t.world;
+  while (w.time() < 1.0) w.run(1000);
+  RestingCube r;
+  r.settled = w.particles().position[1];
+  reset_composite_stats();
+  set_composite_stats_enabled(true);
+  while (w.time() < 1.5) w.run(1000);
+  set_composite_stats_enabled(false);
+  r.stats = composite_stats_total();
+  r.end = w.particles().position[1];
+  r.velocity = w.particles().velocity[1];
+  return r;
+}
+
 // Gravity tilted by 10 degrees (tan = 0.18 < mu = 0.5): the cube lands, settles and sticks. With
 // reuse it serves nearly every step from the stored feature and does not creep: its position
 // over the last half second changes by less than a picometre, as without reuse (same bits).
 TEST(NarrowPhaseReuse, RestingCubeOnABoxKeepsStaticFriction) {
-  Vec3 end[2], drift[2];
-  CompositeStats stats[2];
+  RestingCube run[2];
   for (int reuse = 0; reuse < 2; ++reuse) {
-    TwoBoxes t = cube_on_slab(reuse == 1, 10 * kPi / 180, 0.3, 0.5, {}, {}, 0.0052);
-    World& w = *t.world;
-    while (w.time() < 1.0) w.run(1000);
-    const Vec3 settled = w.particles().position[1];
-    reset_composite_stats();
-    set_composite_stats_enabled(true);
-    while (w.time() < 1.5) w.run(1000);
-    set_composite_stats_enabled(false);
-    stats[reuse] = composite_stats_total();
-    end[reuse] = w.particles().position[1];
-    drift[reuse] = end[reuse] - settled;
+    run[reuse] = resting_cube(reuse == 1, 0);
     std::printf("reuse %d: drift over 0.5 s %.3g m, speed %.3g m/s, %llu served, %llu full queries\n", reuse,
-                norm(drift[reuse]), norm(w.particles().velocity[1]),
-                static_cast<unsigned long long>(stats[reuse].box_reused),
-                static_cast<unsigned long long>(stats[reuse].box_full_queries));
+                norm(run[reuse].end - run[reuse].settled), norm(run[reuse].velocity),
+                static_cast<unsigned long long>(run[reuse].stats.box_reused),
+                static_cast<unsigned long long>(run[reuse].stats.box_full_queries));
   }
-  EXPECT_EQ(end[0], end[1]);
-  EXPECT_LT(norm(drift[1]), 1e-12);
-  EXPECT_GT(stats[1].box_reused, 50 * stats[1].box_full_queries);
-  EXPECT_EQ(stats[0].box_reused, 0u);
+  EXPECT_EQ(run[0].end, run[1].end);
+  EXPECT_LT(norm(run[1].end - run[1].settled), 1e-12);
+  EXPECT_GT(run[1].stats.box_reused, 50 * run[1].stats.box_full_queries);
+  EXPECT_EQ(run[0].stats.box_reused, 0u);
 }
 
 // No damping, no friction: a spinning cube thrown onto the slab bounces off. Kinetic plus
@@ -336,16 +348,9 @@ TEST(ManifoldRefit, MarginBoundsTheTravelOfARefit) {
 // scenario accepts: its four points (vertices of the cube, refit to the bit) are refit on most
 // steps, and it sticks as without the refit.
 TEST(ManifoldRefit, RestingCubeStaysStuck) {
-  TwoBoxes t = cube_on_slab(true, 10 * kPi / 180, 0.3, 0.5, {}, {}, 0.0052, 0.5);
-  World& w = *t.world;
-  while (w.time() < 1.0) w.run(1000);
-  const Vec3 settled = w.particles().position[1];
-  reset_composite_stats();
-  set_composite_stats_enabled(true);
-  while (w.time() < 1.5) w.run(1000);
-  set_composite_stats_enabled(false);
-  const CompositeStats stats = composite_stats_total();
-  const double drift = norm(w.particles().position[1] - settled);
+  const RestingCube run = resting_cube(true, 0.5);
+  const CompositeStats& stats = run.stats;
+  const double drift = norm(run.end - run.settled);
   std::printf("refit 0.5: drift over 0.5 s %.3g m, %llu served (%llu refit), %llu full queries\n", drift,
               static_cast<unsigned long long>(stats.box_reused), static_cast<unsigned long long>(stats.box_refit),
               static_cast<unsigned long long>(stats.box_full_queries));

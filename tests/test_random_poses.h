@@ -1,5 +1,5 @@
 #pragma once
-// Random orientations and directions for the box-pair tests: uniform on the rotation group
+// A cross arm, and random orientations and directions, for the box-pair tests: uniform on the rotation group
 // (a normalised 4-d Gaussian) and on the sphere.
 #include <random>
 
@@ -7,6 +7,8 @@
 #include "talus/math/vec3.h"
 
 namespace talus::testing {
+
+inline const Vec3 kArm{13.5e-3, 1e-3, 1.5e-3};  // a Huet cross arm's half extents (m)
 
 inline Quat random_rotation(std::mt19937_64& rng) {
   std::normal_distribution<double> n(0, 1);
