@@ -42,6 +42,37 @@ class Validation(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
+    def test_fabric_direction_in_words(self):
+        # Fig. 17: a direction counts as vertical or horizontal only if its error keeps it within
+        # 30 degrees of that axis; one that could be either is undecided.
+        self.assertEqual(validation.leaning(89.5, 0.5), "vertical")
+        self.assertEqual(validation.leaning(4.0, 2.0), "horizontal")
+        self.assertEqual(validation.leaning(172.0, 3.0), "horizontal")
+        self.assertEqual(validation.leaning(64.0, 14.0), "oblique")
+        self.assertEqual(validation.leaning(70.0, 25.0), "undecided")
+        self.assertEqual(validation.leaning(179.0, 28.0), "undecided")  # near isotropic: no direction
+        self.assertEqual(validation.leaning(float("nan"), 1.0), "")
+        self.assertEqual(validation.paper_fabric("crosses", 5.5, 1.0, "horizontal"), "as Fig. 17(a): horizontal")
+        self.assertEqual(validation.paper_fabric("crosses", 1.3, 6.0, "oblique"), "unlike Fig. 17(b): vertical")
+        self.assertEqual(validation.paper_fabric("crosses", 3.0, 1.0, "horizontal"), "no figure")
+        self.assertEqual(validation.paper_fabric("spheres", 3.0, 1.0, "vertical"), "as Fig. 17(a): vertical")
+
+    def test_fabric_of_runs_averages_tensors_not_angles(self):
+        # Two runs whose branch vectors lean 10 degrees either side of the horizontal: their mean
+        # fabric is horizontal (0 degrees), where the mean of their angles (10, 170) would be 90.
+        def tensor(deg, a):
+            t = math.radians(deg)
+            c, s = math.cos(2 * t), math.sin(2 * t)
+            return {"xx": 0.5 + a / 4 * c, "zz": 0.5 - a / 4 * c, "xz": a / 4 * s}
+        aniso, direction, err = validation.plane_fabric_of([tensor(10, 0.2), tensor(170, 0.2)])
+        self.assertAlmostEqual(min(direction, 180 - direction), 0.0, places=9)
+        self.assertAlmostEqual(aniso, 0.2 * math.cos(math.radians(20)), places=12)
+        self.assertGreater(err, 5)  # the two runs disagree by 20 degrees
+        aniso, direction, err = validation.plane_fabric_of([tensor(88, 0.3)] * 3)
+        self.assertAlmostEqual(direction, 88.0, places=9)
+        self.assertAlmostEqual(aniso, 0.3, places=12)
+        self.assertAlmostEqual(err, 0.0, places=9)
+
     def test_kept_runs_are_not_run_again(self):
         # A fresh checkout has the kept runs under validation/ but no runs folder: they go back
         # into it with their summaries, so that the sweep passes over them; an interrupted one

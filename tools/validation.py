@@ -84,6 +84,10 @@ FAMILIES = [
            ["0.03", "0.04", "0.05", "0.07", "0.1"], 3, NO_FRAMES + SPHERE_BOX, "spheres"),
     Family("huet2021", "crosses_memoryless", "examples/dam_break_crosses.toml", "dam_break.gate_position",
            ["0.04"], 3, NO_FRAMES + ["contact.tangential=memoryless"], "crosses"),
+    # Sec. IV C 2, Fig. 17(a): a column longer than five circumscribed diameters (L0 > 13.5 cm),
+    # where the walls no longer set the crosses' fabric; 3000 crosses stand about 15 cm high there.
+    Family("huet2021", "crosses_wide", "examples/dam_break_crosses.toml", "dam_break.gate_position",
+           ["0.15"], 3, NO_FRAMES + ["dam_break.count=3000"], "crosses"),
 ]
 
 
@@ -392,27 +396,58 @@ def force_tail(folders, ax, colour, label):
     return largest
 
 
-def fabric(folders, polar, colour, label):
-    """Fig. 17: the mean branch-vector density in the xz plane over the runs, drawn on `polar`;
-    returns each run's anisotropy and preferred direction (degrees from x)."""
+def plane_fabric_of(tensors):
+    """The fabric of several runs: the anisotropy and preferred direction (degrees from x, in
+    [0, 180)) of their mean tensor <n n>, and the direction's jackknife standard error (nan for
+    one run). Directions are axial, so they are never averaged as angles: 10 and 170 degrees are
+    both near the horizontal, their mean 90 is not."""
+    def of(ts):
+        xx = sum(t["xx"] for t in ts) / len(ts)
+        xz = sum(t["xz"] for t in ts) / len(ts)
+        zz = sum(t["zz"] for t in ts) / len(ts)
+        two = math.atan2(2 * xz, xx - zz)  # twice the major axis' angle
+        return 4 * math.hypot(0.5 * (xx - zz), xz), two
+    aniso, two = of(tensors)
+    n = len(tensors)
+    err = float("nan")
+    if n > 1:  # jackknife over the runs, on the doubled angle (wrapped to the nearest turn)
+        dev = [math.remainder(of(tensors[:k] + tensors[k + 1:])[1] - two, 2 * math.pi) for k in range(n)]
+        mean = sum(dev) / n
+        err = 0.5 * math.degrees(math.sqrt((n - 1) / n * sum((d - mean) ** 2 for d in dev)))
+    return aniso, math.degrees(two / 2) % 180.0, err
+
+
+def fabric_rows(folders):
+    """{L0: ([per-run fabric tensor], [per-run aspect ratio])} of the runs before the gate opens."""
+    by_l0 = {}
+    for d in folders:
+        summary = json.loads((d / "summary.json").read_text())
+        f = summary["dam_break"]["before_gate"].get("fabric_xz", {})
+        if "xx" in f:
+            tensors, ratios = by_l0.setdefault(summary["L0"], ([], []))
+            tensors.append(f)
+            ratios.append(summary["aspect_ratio"])
+    return by_l0
+
+
+def draw_fabric(folders, polar, colour, label):
+    """Fig. 17: the mean branch-vector density in the xz plane over the runs, drawn on `polar`."""
     import numpy as np
-    fabrics = [json.loads((d / "summary.json").read_text())["dam_break"]["before_gate"].get("fabric_xz", {}) for d in folders]
     tabs = [read_table(d / "fabric.csv") for d in folders if (d / "fabric.csv").exists()]
     if tabs:
         theta = np.array(tabs[0]["theta"])
         mean = np.mean([t["density"] for t in tabs], axis=0)
         polar.plot(np.concatenate([theta, theta + np.pi, theta[:1]]), np.concatenate([mean, mean, mean[:1]]),
                    "-", color=colour, label=label)
-    return ([f["anisotropy"] for f in fabrics if "anisotropy" in f],
-            [math.degrees(f["direction"]) for f in fabrics if "direction" in f])
 
 
 def huet_micro(lines, figures, base=VALIDATION):
     """Huet et al. 2021, Figs. 12, 15 and 17 from every kept run of the spheres and the crosses:
     the mean speed against t/tau_c, the PDF of F_c/<F_c> before the gate opens (its tail: the
-    largest ratio, 14 for spheres and 32 for crosses in the paper) and the branch-vector fabric."""
+    largest ratio, 14 for spheres and 32 for crosses in the paper) and the branch-vector fabric
+    of each column width."""
     runs = {}
-    for fam in ("spheres", "crosses"):
+    for fam in ("spheres", "crosses", "crosses_wide"):
         folder = base / "huet2021" / fam
         runs[fam] = sorted(d for d in folder.glob("*=*/seed_*") if (d / "summary.json").exists())
     if not any(runs.values()):
@@ -420,42 +455,95 @@ def huet_micro(lines, figures, base=VALIDATION):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4))
+    fig, axes = plt.subplots(1, 3, figsize=(17, 4), gridspec_kw={"width_ratios": [1, 1, 1.3]})
     polar = fig.add_subplot(1, 3, 3, projection="polar")
     axes[2].remove()
     lines += ["Microstructure before the gate opens and collapse speeds, over every kept run (Figs. 12, 15, 17):", "",
-              "| particles | runs | largest F_c/<F_c> (log bins, mean of runs) | fabric anisotropy (xz) | preferred direction (deg from x) |",
-              "|---|---|---|---|---|"]
-    colours = {"spheres": "tab:blue", "crosses": "k"}
+              "| family | runs | L0 (m) | largest F_c/<F_c> (log bins, mean of runs) |", "|---|---|---|---|"]
+    colours = {"spheres": "tab:blue", "crosses": "k", "crosses_wide": "tab:green"}
+    columns = []  # (family, L0, aspect ratio, runs, anisotropy, direction, error, circumscribed diameter)
     for fam, folders in runs.items():
         if not folders:
             continue
         largest = force_tail(folders, axes[1], colours[fam], fam)
-        aniso, direction = fabric(folders, polar, colours[fam], fam)
         for d in folders:  # Fig. 12
             if (d / "collapse_speeds.csv").exists():
                 t = read_table(d / "collapse_speeds.csv")
                 axes[0].plot(t["time_over_tau"], t["speed_over_sqrt_gH0"], "-", color=colours[fam], lw=0.6, alpha=0.6)
+        summaries = [json.loads((d / "summary.json").read_text()) for d in folders]
+        l0 = sorted({r["L0"] for r in summaries})
+        size = summaries[0]["dam_break"].get("particle_size", float("nan"))
         m_l, e_l = mean_err(largest)
-        m_a, e_a = mean_err(aniso)
-        m_d, e_d = mean_err(direction)
-        lines.append(f"| {fam} | {len(folders)} | {fmt(m_l, e_l)} | {fmt(m_a, e_a)} | {fmt(m_d, e_d)} |")
+        lines.append(f"| {fam} | {len(folders)} | {l0[0]:.3g}{'' if len(l0) == 1 else f'-{l0[-1]:.3g}'} | {fmt(m_l, e_l)} |")
+        for width, (tensors, ratios) in sorted(fabric_rows(folders).items()):
+            columns.append((fam, width, sum(ratios) / len(ratios), len(tensors), *plane_fabric_of(tensors), size))
+        if fam == "spheres":
+            draw_fabric(folders, polar, colours[fam], "spheres, every column")
+    # The crosses' fabric turns with the column's width: one curve per width.
+    crosses = [c for c in columns if c[0] != "spheres"]
+    cmap = plt.get_cmap("viridis")
+    for k, (fam, width, *_rest) in enumerate(crosses):
+        folders = [d for d in runs[fam] if json.loads((d / "summary.json").read_text())["L0"] == width]
+        draw_fabric(folders, polar, cmap(k / max(1, len(crosses) - 1)), f"crosses, L0 = {100 * width:.3g} cm")
     axes[0].set(xlabel="t / tau_c", ylabel="mean speed / sqrt(g H0)", title="Fig. 12: every run", xlim=(0, 12))
     axes[1].set(xscale="log", yscale="log", xlabel="F_c / <F_c>", ylabel="PDF", title="Fig. 15(b): before the gate opens")
     axes[1].legend(fontsize=8)
     polar.set_title("Fig. 17: branch vectors, xz plane", fontsize=9)
-    polar.legend(fontsize=7, loc="lower right")
+    polar.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.12, 0.5))
     fig.tight_layout()
     path = base / "huet2021" / "fig12_15_17_speed_forces_fabric.png"
     fig.savefig(path, dpi=110)
     plt.close(fig)
     figures.append(path)
-    lines += ["", "The paper's Fig. 17 averages 30 sphere and 60 cross assemblies whose column is longer than five "
-              "circumscribed diameters (L0 > 13.5 cm for these crosses) and leaves out wall contacts; there the "
-              "crosses' branch vectors prefer the horizontal. The small systems here are narrower (L0 = 3.5-8.5 cm, "
-              "1.3 to 3 crosses), so their crosses lean on the walls and the gate: their fabric is not the one of "
-              "Fig. 17, and the comparison waits for a wide column.", "",
-              f"![speeds, force PDF and fabric]({path.relative_to(base)})", ""]
+    lines += ["", "The fabric before the gate opens, per column width: the anisotropy and preferred direction of "
+              "the runs' mean tensor <n n> of projected branch vectors (xz plane, wall contacts left out as in "
+              "the paper), the direction's error by jackknife over the runs. The paper's Fig. 17(a) averages 30 "
+              "sphere and 60 cross assemblies whose column is longer than five circumscribed diameters d_c: the "
+              "spheres' branch vectors prefer the vertical, the crosses' the horizontal (a cross lies flat). Its "
+              "Fig. 17(b) has narrow, tall columns (top-driven and buckling collapses), where the walls stand "
+              "the crosses' arms upright and the branch vectors prefer the vertical.", "",
+              "| family | L0 (m) | L0 / d_c | a = H0/L0 | runs | anisotropy | preferred direction (deg from x) | | the paper |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    for fam, width, aspect, n, aniso, direction, err, size in columns:
+        got = leaning(direction, err)
+        lines.append(f"| {fam} | {width:.3g} | {width / size:.2g} | {aspect:.2g} | {n} | {aniso:.3g} | "
+                     f"{fmt(direction, err)} | {got} | {paper_fabric(fam, width / size, aspect, got)} |")
+    if not runs["crosses_wide"]:
+        lines += ["", "The wide column (`crosses_wide`, L0 = 15 cm, 5.5 d_c) has not run yet."]
+    lines += ["", f"![speeds, force PDF and fabric]({path.relative_to(base)})", ""]
+
+
+def leaning(direction, err):
+    """The preferred direction of a fabric in words: within 30 degrees of the vertical or the
+    horizontal, or between (the error included: a direction that could be either is undecided)."""
+    if direction is None or not math.isfinite(direction):
+        return ""
+    tilt = abs(direction - 90.0)  # 0: vertical, 90: horizontal
+    spread = err if math.isfinite(err) else 0.0
+    if spread >= 15:
+        return "undecided"
+    if tilt + spread < 30:
+        return "vertical"
+    if tilt - spread > 60:
+        return "horizontal"
+    return "oblique"
+
+
+def paper_fabric(family, widths, aspect, got):
+    """Where Huet et al.'s Fig. 17 speaks for a column L0 = `widths` circumscribed diameters
+    wide of aspect ratio `aspect`, whether Talus' fabric leans the same way: spheres vertical
+    (a); crosses horizontal beyond 5 diameters (a) and vertical in the tall narrow columns of
+    (b), the top-driven and buckling collapses (a = 6 and 7 in its Figs. 6-7; the widths are not
+    given, so a >= 4 and under 5 diameters counts as such here); between those no figure."""
+    if family == "spheres":
+        want, where = "vertical", "Fig. 17(a)"
+    elif widths > 5:
+        want, where = "horizontal", "Fig. 17(a)"
+    elif aspect >= 4:
+        want, where = "vertical", "Fig. 17(b)"
+    else:
+        return "no figure"
+    return f"{'as' if got == want else 'unlike'} {where}: {want}"
 
 
 def plot_huet(cases, out):
@@ -463,7 +551,8 @@ def plot_huet(cases, out):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
-    style = {"spheres": ("o", "tab:blue"), "crosses": ("s", "k"), "crosses_memoryless": ("^", "tab:red")}
+    style = {"spheres": ("o", "tab:blue"), "crosses": ("s", "k"), "crosses_memoryless": ("^", "tab:red"),
+             "crosses_wide": ("D", "tab:green")}
     for fam, (marker, colour) in style.items():
         cs = [c for c in cases if c["family"] == fam]
         if not cs:
