@@ -92,6 +92,27 @@ class Validation(unittest.TestCase):
         finally:
             validation.VALIDATION = saved
 
+    def test_cut_off_run_past_its_gate_is_kept_for_its_state_before_it(self):
+        # A collapse cut off after the gate opened keeps its before-gate state (compact copies
+        # it) but stays out of the runout table until it finishes; one cut off before stays out.
+        fam = validation.FAMILIES[0]
+        saved = validation.VALIDATION
+        validation.VALIDATION = self.base / "validation"
+        try:
+            runs = fam.folder(self.base / "runs")
+            for seed, opened in [(1, True), (2, False)]:
+                run = runs / "gate_position=0.04" / f"seed_{seed}"
+                run.mkdir(parents=True)
+                (run / "summary.json").write_text(json.dumps({
+                    "stop_reason": "interrupted", "dam_break": {"before_gate": {"static_reached": opened}}}))
+            validation.compact(fam, runs)
+            kept = fam.folder(validation.VALIDATION) / "gate_position=0.04"
+            self.assertTrue(validation.gate_opened(kept / "seed_1"))
+            self.assertFalse((kept / "seed_2").exists())
+            self.assertEqual(validation.huet_cases(validation.VALIDATION), [])
+        finally:
+            validation.VALIDATION = saved
+
     def test_power_fit_recovers_its_parameters(self):
         a = np.array([0.8, 1.5, 2.5, 4.0, 6.0, 9.0])
         y = 1.9 * a ** 0.67 * np.exp(self.rng.normal(0, 0.03, a.size))
