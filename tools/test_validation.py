@@ -113,6 +113,14 @@ class Validation(unittest.TestCase):
         finally:
             validation.VALIDATION = saved
 
+    def test_runout_verdict_against_the_papers_exponent_and_prefactor(self):
+        line = validation.runout_verdict({"crosses": (1.26, 1.01, 0.13, 0.085), "spheres": (1.56, 0.83, 0.053, 0.025)})[0]
+        self.assertIn("0.1 standard errors from the paper's n of about 1 (consistent)", line)
+        self.assertIn("below the spheres' 1.56 by 2.1 combined standard errors", line)
+        line = validation.runout_verdict({"crosses": (1.0, 0.6, 0.1, 0.1)})[0]
+        self.assertIn("4.0 standard errors", line)
+        self.assertIn("not consistent", line)
+
     def test_power_fit_recovers_its_parameters(self):
         a = np.array([0.8, 1.5, 2.5, 4.0, 6.0, 9.0])
         y = 1.9 * a ** 0.67 * np.exp(self.rng.normal(0, 0.03, a.size))

@@ -287,6 +287,23 @@ TABLE3_REGIONS = ["whole", "near_gate", "near_gate_top"]  # whole space, half cl
 TABLE3_ROWS = ["coordination_points", "ground_contacts", "side_wall_contacts", "gate_contacts"]
 
 
+def runout_verdict(fits):
+    """Huet et al. 2021, Sec. IV B (Fig. 10): for the crosses n 'seems to be approximately equal
+    to 1', and their prefactor K is 'slightly lower' than the spheres'."""
+    out = []
+    if "crosses" in fits:
+        _, n, _, n_err = fits["crosses"]
+        off = abs(n - 1) / n_err if n_err > 0 else float("inf")
+        out.append(f"The crosses' exponent n = {n:.3g} ± {n_err:.2g} lies {off:.1f} standard errors from the paper's "
+                   f"n of about 1 ({'consistent' if off < 2 else 'not consistent'}).")
+    if "crosses" in fits and "spheres" in fits:
+        (kc, _, kc_err, _), (ks, _, ks_err, _) = fits["crosses"], fits["spheres"]
+        gap = (ks - kc) / math.hypot(kc_err, ks_err)
+        out.append(f"Their prefactor K = {kc:.3g} lies {'below' if kc < ks else 'above'} the spheres' {ks:.3g} by "
+                   f"{abs(gap):.1f} combined standard errors; the paper finds it slightly lower.")
+    return [" ".join(out)] if out else []
+
+
 def huet_cases(base=VALIDATION):
     """One record per family and point, from the committed summaries under `base`."""
     cases = []
@@ -354,12 +371,15 @@ def huet_report(lines, figures, base=VALIDATION):
                      f"{fmt(c['runout_ratio'], c['runout_ratio_err'])} | {fmt(fit, None) if fit else ''} | "
                      f"{fmt(c['height_ratio'], c['height_ratio_err'])} | {c['regime']} {c['regimes']} |")
     lines.append("")
+    fits = {}
     for fam in ("spheres", "crosses"):
         pts = [(c["aspect_ratio"], c["runout_ratio"]) for c in cases if c["family"] == fam]
         fit = power_fit(pts)
         if fit:
+            fits[fam] = fit
             lines.append(f"Power law (L_inf - L0)/L0 = K a^n over the {fam}: K = {fit[0]:.3g} ± {fit[2]:.2g}, "
                          f"n = {fit[1]:.3g} ± {fit[3]:.2g} ({len(pts)} aspect ratios).")
+    lines += runout_verdict(fits)
     lines += ["", "Contacts before the gate opens, as the paper's Table III (whole column; the half close to "
               "the gate; the quarter close to the top of the gate): coordination number (contact points per "
               "particle) and contact points on the ground, the side walls and the gate, mean (σ = standard "
