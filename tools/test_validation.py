@@ -121,6 +121,21 @@ class Validation(unittest.TestCase):
         self.assertIn("4.0 standard errors", line)
         self.assertIn("not consistent", line)
 
+    def test_staircase_rows_include_kept_cases_missing_from_its_table(self):
+        # The staircase's table lists the cases of the run that wrote it; the report also reads
+        # the finished cases kept since, and leaves out an interrupted one.
+        study = self.base / "hstop"
+        write_csv(study / "hstop_runs.csv", [{"lambda": 1.0, "H": 22, "angle": 20.0, "flow_state": "arrested",
+                                              "arrested": 1, "h": 19.6}])
+        for name, reason, state in [("lambda1_H24_theta20", "arrested", "arrested"),
+                                    ("lambda1_H24_theta20.5", "end_time", "accelerating"),
+                                    ("lambda1_H26_theta20", "interrupted", "")]:
+            (study / name).mkdir(parents=True)
+            (study / name / "summary.json").write_text(json.dumps({"stop_reason": reason, "flow_state": state, "h": 21.4}))
+        rows = validation_closures.kept_rows(chute_fits, study, "hstop_runs.csv")
+        keys = sorted((float(r["H"]), float(r["angle"]), int(r["arrested"])) for r in rows)
+        self.assertEqual(keys, [(22.0, 20.0, 1), (24.0, 20.0, 1), (24.0, 20.5, 0)])
+
     def test_power_fit_recovers_its_parameters(self):
         a = np.array([0.8, 1.5, 2.5, 4.0, 6.0, 9.0])
         y = 1.9 * a ** 0.67 * np.exp(self.rng.normal(0, 0.03, a.size))

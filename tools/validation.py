@@ -808,7 +808,8 @@ def weinhart_report(lines, figures, base=VALIDATION):
     chute_fits = fits_module()
     out = base / "weinhart2012"
     hstop_dir = out / "hstop"
-    staircase = chute_fits._read(str(hstop_dir / "hstop_runs.csv"))
+    # The table the staircase rewrites as it goes, and its finished cases kept since.
+    staircase = validation_closures.kept_rows(chute_fits, hstop_dir, "hstop_runs.csv")
     complete = (hstop_dir / "hstop_intervals.csv").exists()
     intervals = (chute_fits._read(str(hstop_dir / "hstop_intervals.csv")) if complete
                  else chute_fits.arrest_intervals(staircase))

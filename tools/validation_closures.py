@@ -18,10 +18,11 @@ PAPER_ERR = {"F": 0.121, "bulk_volume_fraction": 0.002, "K": 0.013, "alpha": 0.0
 BATCHES = 5  # batch means of a case's series: its Froude number's standard error
 
 
-def kept_rows(chute_fits, study_dir: Path):
-    """The rows of a chute study's table (sweep_runs.csv, written once all its cases are done), and
-    of its finished cases still missing from it, read from their kept summary.json."""
-    rows = chute_fits._read(str(study_dir / "sweep_runs.csv"))
+def kept_rows(chute_fits, study_dir: Path, table="sweep_runs.csv"):
+    """The rows of a chute study's table (a flow map's sweep_runs.csv, written once all its cases
+    are done; the staircase's hstop_runs.csv), and of its finished cases still missing from it,
+    read from their kept summary.json."""
+    rows = chute_fits._read(str(study_dir / table))
     seen = {(r["lambda"], r["H"], r["angle"]) for r in rows}
     for case in sorted(study_dir.glob("lambda*_H*_theta*")):
         lam, rest = case.name[len("lambda"):].split("_H")
