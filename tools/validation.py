@@ -450,16 +450,17 @@ def plane_fabric_of(tensors):
     return aniso, math.degrees(two / 2) % 180.0, err
 
 
-def fabric_rows(folders):
-    """{L0: ([per-run fabric tensor], [per-run aspect ratio])} of the runs before the gate opens."""
+def fabric_rows(folders, summaries):
+    """{L0: ([per-run fabric tensor], [per-run aspect ratio], [run folder])} of the runs before
+    the gate opens."""
     by_l0 = {}
-    for d in folders:
-        summary = json.loads((d / "summary.json").read_text())
+    for d, summary in zip(folders, summaries):
         f = summary["dam_break"]["before_gate"].get("fabric_xz", {})
         if "xx" in f:
-            tensors, ratios = by_l0.setdefault(summary["L0"], ([], []))
+            tensors, ratios, runs = by_l0.setdefault(summary["L0"], ([], [], []))
             tensors.append(f)
             ratios.append(summary["aspect_ratio"])
+            runs.append(d)
     return by_l0
 
 
@@ -494,7 +495,7 @@ def huet_micro(lines, figures, base=VALIDATION):
     lines += ["Microstructure before the gate opens and collapse speeds, over every kept run (Figs. 12, 15, 17):", "",
               "| family | runs | L0 (m) | largest F_c/<F_c> (log bins, mean of runs) |", "|---|---|---|---|"]
     colours = {"spheres": "tab:blue", "crosses": "k", "crosses_wide": "tab:green", "crosses_large": "tab:orange"}
-    columns = []  # (family, L0, aspect ratio, runs, anisotropy, direction, error, circumscribed diameter)
+    columns = []  # (family, L0, aspect ratio, runs, anisotropy, direction, error, circumscribed diameter, folders)
     for fam, folders in runs.items():
         if not folders:
             continue
@@ -508,16 +509,15 @@ def huet_micro(lines, figures, base=VALIDATION):
         size = summaries[0]["dam_break"].get("particle_size", float("nan"))
         m_l, e_l = mean_err(largest)
         lines.append(f"| {fam} | {len(folders)} | {l0[0]:.3g}{'' if len(l0) == 1 else f'-{l0[-1]:.3g}'} | {fmt(m_l, e_l)} |")
-        for width, (tensors, ratios) in sorted(fabric_rows(folders).items()):
-            columns.append((fam, width, sum(ratios) / len(ratios), len(tensors), *plane_fabric_of(tensors), size))
+        for width, (tensors, ratios, kept) in sorted(fabric_rows(folders, summaries).items()):
+            columns.append((fam, width, sum(ratios) / len(ratios), len(tensors), *plane_fabric_of(tensors), size, kept))
         if fam == "spheres":
             draw_fabric(folders, polar, colours[fam], "spheres, every column")
     # The crosses' fabric turns with the column's width: one curve per width.
     crosses = [c for c in columns if c[0] != "spheres"]
     cmap = plt.get_cmap("viridis")
-    for k, (fam, width, *_rest) in enumerate(crosses):
-        folders = [d for d in runs[fam] if json.loads((d / "summary.json").read_text())["L0"] == width]
-        draw_fabric(folders, polar, cmap(k / max(1, len(crosses) - 1)), f"crosses, L0 = {100 * width:.3g} cm")
+    for k, (_fam, width, *_rest, kept) in enumerate(crosses):
+        draw_fabric(kept, polar, cmap(k / max(1, len(crosses) - 1)), f"crosses, L0 = {100 * width:.3g} cm")
     axes[0].set(xlabel="t / tau_c", ylabel="mean speed / sqrt(g H0)", title="Fig. 12: every run", xlim=(0, 12))
     axes[1].set(xscale="log", yscale="log", xlabel="F_c / <F_c>", ylabel="PDF", title="Fig. 15(b): before the gate opens")
     axes[1].legend(fontsize=8)
@@ -537,7 +537,7 @@ def huet_micro(lines, figures, base=VALIDATION):
               "the crosses' arms upright and the branch vectors prefer the vertical.", "",
               "| family | L0 (m) | L0 / d_c | a = H0/L0 | runs | anisotropy | preferred direction (deg from x) | | the paper |",
               "|---|---|---|---|---|---|---|---|---|"]
-    for fam, width, aspect, n, aniso, direction, err, size in columns:
+    for fam, width, aspect, n, aniso, direction, err, size, _kept in columns:
         got = leaning(direction, err)
         lines.append(f"| {fam} | {width:.3g} | {width / size:.2g} | {aspect:.2g} | {n} | {aniso:.3g} | "
                      f"{fmt(direction, err)} | {got} | {paper_fabric(fam, width / size, aspect, got)} |")
