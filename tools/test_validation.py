@@ -246,6 +246,12 @@ class Validation(unittest.TestCase):
         self.assertEqual(b["n"], 16)
         for name in ("beta", "gamma"):
             self.assertLess(abs(b["params"][name] - t1[name]), 4 * b["se"][name], name)
+        # Eq. 49 over the 16 steady flows, noise 0.02: 0.02 (sum x^2 / 0.02^2 is chi^2 with 16 degrees
+        # of freedom, in [5.81, 32.0] at 99 %, so the err lies in [0.0124, 0.0292])
+        spread = validation_closures.rule_deviation(chute_fits, validation_closures.steady(runs), hs)
+        self.assertGreater(spread, 0.0124)
+        self.assertLess(spread, 0.0292)
+        self.assertTrue(any("scatter about Table 1's rule no more than" in line for line in lines))
         close = validation_closures.closures(chute_fits, validation_closures.steady(runs), hs)
         self.assertLess(close["K"]["paper_err"], 0.01)
         self.assertLess(close["bulk_volume_fraction"]["paper_err"], 0.002)

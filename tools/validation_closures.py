@@ -14,6 +14,7 @@ import numpy as np
 # Weinhart et al. 2012, lambda = 1: Eq. (52b), Eq. (53), Table 2, and the errors of Eq. (49)
 # it quotes for them (Eq. 52c, Sect. 9.2, Table 2, Table 1's err(F)).
 PAPER = {"c0": 0.5985, "c1": 4.8, "c2": 40.85, "d0": 132.0, "d1": 21.50, "d_lambda": 6.678}
+PAPER_RULE = {"beta": 0.196, "gamma": 0.040}  # Weinhart et al. 2012, Table 1, lambda = 1 (Eq. 47)
 PAPER_ERR = {"F": 0.121, "bulk_volume_fraction": 0.002, "K": 0.013, "alpha": 0.01763}
 BATCHES = 5  # batch means of a case's series: its Froude number's standard error
 
@@ -130,6 +131,19 @@ def length_check(flowmap, long_rows, base: Path):
     return out
 
 
+def eq49_err(xs):
+    """err of Weinhart et al. 2012, Eq. (49): (sum x_i^2 / (N - 1))^(1/2)."""
+    xs = [x for x in xs if math.isfinite(x)]
+    return math.sqrt(sum(x * x for x in xs) / (len(xs) - 1)) if len(xs) > 1 else math.nan
+
+
+def rule_deviation(chute_fits, rows, paper_hstop):
+    """err(F - F_Table1) of Eq. (49) over steady flows: their spread about Table 1's flow rule (at
+    Table 1's h_stop), to set beside the paper's err(F) = 0.121 of its own flows about it."""
+    return eq49_err([r["froude"] - (PAPER_RULE["beta"] * r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop))
+                                    - PAPER_RULE["gamma"]) for r in rows])
+
+
 def rule_ratio_lines(chute_fits, rows, paper_hstop, base: Path, fit):
     """Each steady flow's F over Table 1's flow rule at its h / h_stop: whether Talus' flows
     fall short of the paper's by a shift (gamma) or by a factor (beta). `fit`: the flow rule
@@ -139,7 +153,7 @@ def rule_ratio_lines(chute_fits, rows, paper_hstop, base: Path, fit):
     cases = []
     for r in sorted(rows, key=lambda r: r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop))):
         x = r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop))
-        rule = 0.196 * x - 0.040
+        rule = PAPER_RULE["beta"] * x - PAPER_RULE["gamma"]
         cases.append((r, x, r["froude"] / rule, froude_error(case_folder(base, "flowmap", r)) / rule))
     listed = ", ".join(f"{c[2]:.2f} (H = {c[0]['H']:g}, {c[0]['angle']:g}°, h / h_stop = {c[1]:.2f})" for c in cases)
     errs = [c[3] for c in cases if math.isfinite(c[3])]
@@ -148,6 +162,12 @@ def rule_ratio_lines(chute_fits, rows, paper_hstop, base: Path, fit):
     if errs:
         text += (f" Each ratio's statistical error is at most {max(errs):.3f}; {below} of the {len(cases)} flows lie "
                  "more than three of their errors below the rule.")
+    spread = rule_deviation(chute_fits, rows, paper_hstop)
+    if math.isfinite(spread):
+        text += (f" Their spread about the rule, err(F - F_Table1) of Eq. 49, is {spread:.3f}, against "
+                 f"{PAPER_ERR['F']} for the paper's own steady flows about it: "
+                 + ("Talus' flows scatter about Table 1's rule no more than the paper's do."
+                    if spread <= PAPER_ERR["F"] else "Talus' flows scatter about Table 1's rule more than the paper's do."))
     if fit:
         g, g_se, b, b_se = fit["params"]["gamma"], fit["se"]["gamma"], fit["params"]["beta"], fit["se"]["beta"]
         if g_se > 0 and b_se > 0:

@@ -35,9 +35,17 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 volatile std::sig_atomic_t g_stop_requested = 0;
 extern "C" void request_stop(int) { g_stop_requested = 1; }
 
+// Rate and ETA count from where this process began: a resumed run starts at its checkpoint's
+// step and time, not at zero.
 class Progress {
  public:
-  explicit Progress(bool quiet) : quiet_(quiet), tty_(isatty(STDERR_FILENO)), start_(Clock::now()), last_(start_) {}
+  Progress(bool quiet, const World& w)
+      : quiet_(quiet),
+        tty_(isatty(STDERR_FILENO)),
+        start_(Clock::now()),
+        last_(start_),
+        start_step_(w.step_count()),
+        start_time_(w.time()) {}
   void update(const World& w, double end_time, bool force = false) {
     if (quiet_) return;
     const auto now = Clock::now();
@@ -45,9 +53,10 @@ class Progress {
     if (!force && since < (tty_ ? 0.5 : 10.0)) return;
     last_ = now;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const double rate = elapsed > 0 ? w.step_count() / elapsed : 0;
+    const double rate = elapsed > 0 ? static_cast<double>(w.step_count() - start_step_) / elapsed : 0;
     const double fraction = std::min(1.0, w.time() / end_time);
-    const double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
+    const double done = w.time() - start_time_;
+    const double eta = done > 0 ? elapsed * std::max(0.0, end_time - w.time()) / done : 0;
     // Only rank 0 of a distributed run reports progress: counts over the ranks would need the
     // others to join at times only this process's clock decides.
     if (w.distributed())
@@ -68,6 +77,8 @@ class Progress {
   using Clock = std::chrono::steady_clock;
   bool quiet_, tty_;
   Clock::time_point start_, last_;
+  std::uint64_t start_step_;
+  double start_time_;
 };
 
 }  // namespace
@@ -101,7 +112,7 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
   const RunControl& run = sc.control;
   const std::vector<std::string> columns = timeseries_columns(world, run.on_leave);
   io::CsvWriter csv(opt.out / "timeseries.csv", columns);
-  Progress progress(opt.quiet);
+  Progress progress(opt.quiet, world);
   const auto start = std::chrono::steady_clock::now();
 
   RunOutcome outcome;
