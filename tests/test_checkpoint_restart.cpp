@@ -129,5 +129,22 @@ TEST(CheckpointRestart, CheckpointsDoNotChangeTheRun) {
   fs::remove_all(dir);
 }
 
+TEST(CheckpointRestart, ResumedRunKeepsTheCadenceItWasStartedWith) {
+  // The interval came from the command line (RunOptions), not the scenario; the run resumed
+  // without it writes its checkpoints at the same steps as the uninterrupted run, not one at
+  // every batch once the next was due.
+  const fs::path dir = testing::test_folder();
+  testing::run_case(testing::kSettlingBox, dir / "a", 0.01);
+  const std::vector<fs::path> a = CheckpointSeries::list(dir / "a" / "checkpoints");
+  ASSERT_EQ(a.size(), 3u);
+  auto first = std::make_shared<io::Checkpoint>(io::read_checkpoint(a.front()));
+  testing::run_case(testing::kSettlingBox, dir / "b", 0, first, a.front().string());
+  const std::vector<fs::path> b = CheckpointSeries::list(dir / "b" / "checkpoints");
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b[0].filename(), a[1].filename());
+  EXPECT_EQ(b[1].filename(), a[2].filename());
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace talus

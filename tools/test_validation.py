@@ -188,6 +188,10 @@ class Validation(unittest.TestCase):
             self.assertLess(abs(table[name] - value), 4 * table[name + "_err"], f"{name}: {table[name]} vs {value}")
         self.assertTrue(any(line.startswith("| delta1 |") for line in lines))
         self.assertTrue(table["staircase_complete"])
+        # With A held at the value the staircase was made from, the two angles come back too.
+        for name in ("delta1", "delta2", "beta"):
+            self.assertLess(abs(table[name + "_with_paper_A"] - t1[name]), 4 * table[name + "_with_paper_A_err"], name)
+        self.assertTrue(any("both angles within the 0.5° bar" in line for line in lines))
 
     def test_a_staircase_still_running_is_reported_from_its_cases(self):
         # Thin layers only: the intervals come from hstop_runs.csv, and an Eq. 35 fit that heights

@@ -692,6 +692,57 @@ def consistency_lines(chute_fits, intervals, hs):
             "realisation's arrest near the curve, which widens every interval's true uncertainty."]
 
 
+def fixed_a_fit(chute_fits, intervals, hs, steady_flows):
+    """How far the intervals pin Eq. 35: the free fit's parameter correlations, and delta1 and
+    delta2 fitted with A held at Table 1's value (the one parameter that heights short of
+    delta1's asymptote trade against the two angles), with the flow rule through that curve.
+    None without a free fit or with fewer than 4 angle intervals."""
+    import numpy as np
+    from scipy.optimize import curve_fit
+    ang = [r for r in intervals if r["kind"] == "angle" and r["h"] != ""]
+    if not hs or len(ang) < 4:
+        return None
+    h = np.array([r["h"] for r in ang], float)
+    mid = np.array([0.5 * (r["angle_lo"] + r["angle_hi"]) for r in ang])
+    names = ("A", "delta1", "delta2")
+    _, cov = curve_fit(chute_fits.theta_stop35, h, mid, p0=[hs["params"][k] for k in names], maxfev=20000)
+    se = np.sqrt(np.diag(cov))
+    corr = cov / np.outer(se, se)
+    A = TABLE1["A"]
+    q, qcov = curve_fit(lambda x, d1, d2: chute_fits.theta_stop35(x, A, d1, d2), h, mid,
+                        p0=[TABLE1["delta1"], TABLE1["delta2"]], maxfev=20000)
+    qse = np.sqrt(np.diag(qcov))
+    curve = {"A": A, "delta1": float(q[0]), "delta2": float(q[1])}
+    sigma = np.array([(r["angle_hi"] - r["angle_lo"]) / math.sqrt(12) for r in ang])
+    out = {"corr": {f"{names[a]}-{names[b]}": float(corr[a, b]) for a, b in ((0, 1), (0, 2), (1, 2))},
+           "params": curve, "se": {"delta1": float(qse[0]), "delta2": float(qse[1])}, "n": len(ang),
+           "chi2": float(np.sum(((mid - chute_fits.theta_stop35(h, **curve)) / sigma) ** 2)), "flow_rule": None}
+    if len(steady_flows) >= 3:
+        p, pse, _ = chute_fits.fit_flow_rule([r["h"] for r in steady_flows], [r["angle"] for r in steady_flows],
+                                             [r["froude"] for r in steady_flows], curve)
+        out["flow_rule"] = {"params": p, "se": pse, "n": len(steady_flows)}
+    return out
+
+
+def fixed_a_lines(fixed):
+    """The report's paragraph on fixed_a_fit."""
+    if not fixed:
+        return []
+    c, q, e = fixed["corr"], fixed["params"], fixed["se"]
+    within = all(abs(q[k] - TABLE1[k]) <= TABLE1_BAR[k][1] for k in ("delta1", "delta2"))
+    text = (f"The intervals pin the curve, not its three parameters: the free fit's correlations are A-delta1 "
+            f"{c['A-delta1']:.2f}, A-delta2 {c['A-delta2']:.2f} and delta1-delta2 {c['delta1-delta2']:.2f}. With A "
+            f"held at Table 1's {q['A']}, the same {fixed['n']} intervals give delta1 = {fmt(q['delta1'], e['delta1'], 4)}° "
+            f"and delta2 = {fmt(q['delta2'], e['delta2'], 4)}° (Table 1: {TABLE1['delta1']}°, {TABLE1['delta2']}°; chi^2 "
+            f"= {fixed['chi2']:.1f} for {fixed['n'] - 2} degrees of freedom): "
+            + ("both angles within the 0.5° bar." if within else "not both within the 0.5° bar."))
+    fr = fixed["flow_rule"]
+    if fr:
+        text += (f" The flow rule through that curve, over the {fr['n']} steady flows: beta = "
+                 f"{fmt(fr['params']['beta'], fr['se']['beta'])}, gamma = {fmt(fr['params']['gamma'], fr['se']['gamma'])}.")
+    return ["", text]
+
+
 def wrong_side_lines(chute_fits, staircase):
     """The staircase's cases that land on the other side of the paper's curve: arrested where
     Eq. 35 says the layer flows (theta above theta_stop(h)), or flowing below it; by how far in
@@ -867,6 +918,17 @@ def weinhart_report(lines, figures, base=VALIDATION):
         lines.append(f"| {label} | {block['n']} | {fmt(q['A'], e['A'])} | {fmt(q['delta1'], e['delta1'])} | "
                      f"{fmt(q['delta2'], e['delta2'])} | {block.get('err_deg', block.get('err')):.2g} |")
     lines += consistency_lines(chute_fits, intervals, hs)
+    fixed = fixed_a_fit(chute_fits, intervals, hs, validation_closures.steady(flowmap))
+    lines += fixed_a_lines(fixed)
+    if fixed:
+        for name in ("delta1", "delta2"):
+            table[name + "_with_paper_A"] = fixed["params"][name]
+            table[name + "_with_paper_A_err"] = fixed["se"][name]
+        if fixed["flow_rule"]:
+            for name in ("beta", "gamma"):
+                table[name + "_with_paper_A"] = float(fixed["flow_rule"]["params"][name])
+                table[name + "_with_paper_A_err"] = float(fixed["flow_rule"]["se"][name])
+        (out / "table1.json").write_text(json.dumps(table, indent=1) + "\n")
     if not determined(hs):
         top = max((r["h"] for r in intervals if r["kind"] == "angle"), default=0.0)
         lines += ["", f"The Eq. 35 fit is not determined yet: heights up to h = {top:.0f} d do not reach the curve's "
@@ -878,12 +940,14 @@ def weinhart_report(lines, figures, base=VALIDATION):
     if map_figure:
         lines += [f"![flow rule and closures]({map_figure.relative_to(base)})", ""]
         figures.append(map_figure)
-    lines += ["Table 1 (beta and gamma with Talus' own h_stop fit):", "",
-              "| quantity | Talus | Weinhart et al. 2012, Table 1 | difference | within the bar |", "|---|---|---|---|---|"]
+    lines += ["Table 1 (beta and gamma with Talus' own h_stop fit; the last column holds A at Table 1's value, "
+              "see above):", "",
+              "| quantity | Talus | Weinhart et al. 2012, Table 1 | difference | within the bar | Talus, A = 3.355 |",
+              "|---|---|---|---|---|---|"]
     for name, paper in TABLE1.items():
         v, e = table[name], table[name + "_err"]
         if v is None:
-            lines.append(f"| {name} | not yet fitted | {paper} | | |")
+            lines.append(f"| {name} | not yet fitted | {paper} | | | |")
             continue
         bar = TABLE1_BAR[name]
         if bar is None:
@@ -892,7 +956,10 @@ def weinhart_report(lines, figures, base=VALIDATION):
             verdict = "yes" if abs(v - paper) <= bar[1] else "no"
         else:
             verdict = "yes" if abs(v - paper) <= bar[1] * paper else "no"
-        lines.append(f"| {name} | {v:.4g} ± {e:.2g} | {paper} | {v - paper:+.3g} | {verdict} |")
+        held = table.get(name + "_with_paper_A")
+        held_text = (f"{fmt(held, table[name + '_with_paper_A_err'], 4)}" if held is not None
+                     else ("(held)" if name == "A" and "delta1_with_paper_A" in table else ""))
+        lines.append(f"| {name} | {v:.4g} ± {e:.2g} | {paper} | {v - paper:+.3g} | {verdict} | {held_text} |")
     lines.append("")
 
 

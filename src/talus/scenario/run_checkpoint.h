@@ -17,6 +17,9 @@ struct LoopState {
   double next_output = 0;  ///< s, time of the next time-series row
   double next_frame = 0;   ///< s, time of the next VTK frame
   double next_checkpoint = std::numeric_limits<double>::infinity();  ///< s
+  // s between checkpoints (0: only the final one). Carried so that a resumed run keeps the
+  // cadence it was started with, which --checkpoint-interval may have set outside the scenario.
+  double checkpoint_interval = 0;
   std::vector<double> vtk_times;  ///< s, of every VTK frame written
   double next_snapshot = 0;       ///< s, time of the next snapshot file
   std::size_t snapshots = 0;      ///< snapshot files written

@@ -112,7 +112,6 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
   const RunControl& run = sc.control;
   const std::vector<std::string> columns = timeseries_columns(world, run.on_leave);
   io::CsvWriter csv(opt.out / "timeseries.csv", columns);
-  Progress progress(opt.quiet, world);
   const auto start = std::chrono::steady_clock::now();
 
   RunOutcome outcome;
@@ -153,7 +152,7 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
   };
   if (run.snapshot_interval > 0) std::filesystem::create_directories(opt.out / "snapshots");
   for (auto& o : sc.observers) o->start(world, opt.out);
-  const double checkpoint_interval = opt.checkpoint_interval.value_or(run.checkpoint_interval);
+  double checkpoint_interval = opt.checkpoint_interval.value_or(run.checkpoint_interval);
   CheckpointSeries checkpoints(opt.out, run.checkpoint_keep);
   double checkpoint_seconds = 0;
   auto write_checkpoint = [&] {
@@ -175,7 +174,10 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
     for (std::size_t r = 0; r + columns.size() <= loop.rows.size(); r += columns.size())
       csv.row(std::span<const double>(loop.rows.data() + r, columns.size()));
     if (vtk) vtk->resume(loop.vtk_times);
-    if (opt.checkpoint_interval || !std::isfinite(loop.next_checkpoint))  // a new interval starts now
+    // --checkpoint-interval starts a new cadence now; otherwise the run keeps the one it was
+    // started with (the scenario's, for a checkpoint that did not record it).
+    if (!opt.checkpoint_interval && loop.checkpoint_interval >= 0) checkpoint_interval = loop.checkpoint_interval;
+    if (opt.checkpoint_interval || !std::isfinite(loop.next_checkpoint) || checkpoint_interval <= 0)
       loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
   // Spread before anything looks at the system: a scenario built under mpirun is on rank 0 alone
@@ -193,6 +195,8 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
     loop.next_output = world.time() + run.output_interval;
     loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
+  loop.checkpoint_interval = checkpoint_interval;
+  Progress progress(opt.quiet, world);  // after the restart: it counts from the checkpoint's step
   const std::uint64_t first_step = world.step_count();
   const double dt = world.settings().time_step;
   // Each batch ends at the first step where something below is due, as the loop's own tests
