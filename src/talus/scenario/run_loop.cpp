@@ -174,9 +174,11 @@ RunOutcome run_scenario(Scenario& sc, RunOptions options) {
     for (std::size_t r = 0; r + columns.size() <= loop.rows.size(); r += columns.size())
       csv.row(std::span<const double>(loop.rows.data() + r, columns.size()));
     if (vtk) vtk->resume(loop.vtk_times);
-    // --checkpoint-interval starts a new cadence now; otherwise the run keeps the one it was
-    // started with (the scenario's, for a checkpoint that did not record it).
-    if (!opt.checkpoint_interval && loop.checkpoint_interval >= 0) checkpoint_interval = loop.checkpoint_interval;
+    // --checkpoint-interval starts a new cadence now; the scenario's own interval goes on from the
+    // checkpoint's next one; without either the run keeps the interval it was started with,
+    // which --checkpoint-interval may have set.
+    if (!opt.checkpoint_interval && !(run.checkpoint_interval > 0) && loop.checkpoint_interval > 0)
+      checkpoint_interval = loop.checkpoint_interval;
     if (opt.checkpoint_interval || !std::isfinite(loop.next_checkpoint) || checkpoint_interval <= 0)
       loop.next_checkpoint = checkpoint_interval > 0 ? world.time() + checkpoint_interval : kNever;
   }
