@@ -570,6 +570,13 @@ def large_column_lines(folders):
         if not finished(d):
             out += ["", f"Its collapse has run to t = {summary['final_time']:.3g} s ({summary['steps']:,} steps) and "
                     "goes on from its checkpoint."]
+        else:
+            db = summary["dam_break"]
+            out += ["", f"Its collapse ended at t = {summary['final_time']:.3g} s ({summary['steps']:,} steps from the "
+                    f"pour, {db['collapse_duration']:.3g} s after the gate opened): (L_inf - L0)/L0 = "
+                    f"{db['runout_ratio']:.3g} ({db['runout_ratio_low']:.3g} to {db['runout_ratio_high']:.3g} over the "
+                    f"front's definitions) and H0/H_inf = {db['height_ratio']:.3g}, the crosses_large row of the "
+                    "runout table."]
     return out
 
 
