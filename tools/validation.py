@@ -899,6 +899,15 @@ def weinhart_report(lines, figures, base=VALIDATION):
     table["staircase_complete"] = complete
     table["staircase_max_H"] = max_h
     table["flow_map_cases"] = len(flowmap)
+    fixed = fixed_a_fit(chute_fits, intervals, hs, validation_closures.steady(flowmap))
+    if fixed:
+        for name in ("delta1", "delta2"):
+            table[name + "_with_paper_A"] = fixed["params"][name]
+            table[name + "_with_paper_A_err"] = fixed["se"][name]
+        if fixed["flow_rule"]:
+            for name in ("beta", "gamma"):
+                table[name + "_with_paper_A"] = float(fixed["flow_rule"]["params"][name])
+                table[name + "_with_paper_A_err"] = float(fixed["flow_rule"]["se"][name])
     out.mkdir(parents=True, exist_ok=True)
     (out / "table1.json").write_text(json.dumps(table, indent=1) + "\n")
 
@@ -925,17 +934,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
         lines.append(f"| {label} | {block['n']} | {fmt(q['A'], e['A'])} | {fmt(q['delta1'], e['delta1'])} | "
                      f"{fmt(q['delta2'], e['delta2'])} | {block.get('err_deg', block.get('err')):.2g} |")
     lines += consistency_lines(chute_fits, intervals, hs)
-    fixed = fixed_a_fit(chute_fits, intervals, hs, validation_closures.steady(flowmap))
     lines += fixed_a_lines(fixed)
-    if fixed:
-        for name in ("delta1", "delta2"):
-            table[name + "_with_paper_A"] = fixed["params"][name]
-            table[name + "_with_paper_A_err"] = fixed["se"][name]
-        if fixed["flow_rule"]:
-            for name in ("beta", "gamma"):
-                table[name + "_with_paper_A"] = float(fixed["flow_rule"]["params"][name])
-                table[name + "_with_paper_A_err"] = float(fixed["flow_rule"]["se"][name])
-        (out / "table1.json").write_text(json.dumps(table, indent=1) + "\n")
     if not determined(hs):
         top = max((r["h"] for r in intervals if r["kind"] == "angle"), default=0.0)
         lines += ["", f"The Eq. 35 fit is not determined yet: heights up to h = {top:.0f} d do not reach the curve's "

@@ -14,7 +14,6 @@ import numpy as np
 # Weinhart et al. 2012, lambda = 1: Eq. (52b), Eq. (53), Table 2, and the errors of Eq. (49)
 # it quotes for them (Eq. 52c, Sect. 9.2, Table 2, Table 1's err(F)).
 PAPER = {"c0": 0.5985, "c1": 4.8, "c2": 40.85, "d0": 132.0, "d1": 21.50, "d_lambda": 6.678}
-PAPER_RULE = {"beta": 0.196, "gamma": 0.040}  # Weinhart et al. 2012, Table 1, lambda = 1 (Eq. 47)
 PAPER_ERR = {"F": 0.121, "bulk_volume_fraction": 0.002, "K": 0.013, "alpha": 0.01763}
 BATCHES = 5  # batch means of a case's series: its Froude number's standard error
 
@@ -131,17 +130,12 @@ def length_check(flowmap, long_rows, base: Path):
     return out
 
 
-def eq49_err(xs):
-    """err of Weinhart et al. 2012, Eq. (49): (sum x_i^2 / (N - 1))^(1/2)."""
-    xs = [x for x in xs if math.isfinite(x)]
-    return math.sqrt(sum(x * x for x in xs) / (len(xs) - 1)) if len(xs) > 1 else math.nan
-
-
 def rule_deviation(chute_fits, rows, paper_hstop):
     """err(F - F_Table1) of Eq. (49) over steady flows: their spread about Table 1's flow rule (at
     Table 1's h_stop), to set beside the paper's err(F) = 0.121 of its own flows about it."""
-    return eq49_err([r["froude"] - (PAPER_RULE["beta"] * r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop))
-                                    - PAPER_RULE["gamma"]) for r in rows])
+    rule = chute_fits.TABLE1_LAMBDA1
+    return chute_fits.err([r["froude"] - (rule["beta"] * r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop))
+                                          - rule["gamma"]) for r in rows])
 
 
 def rule_ratio_lines(chute_fits, rows, paper_hstop, base: Path, fit):
@@ -153,7 +147,7 @@ def rule_ratio_lines(chute_fits, rows, paper_hstop, base: Path, fit):
     cases = []
     for r in sorted(rows, key=lambda r: r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop))):
         x = r["h"] / float(chute_fits.hstop35(r["angle"], **paper_hstop))
-        rule = PAPER_RULE["beta"] * x - PAPER_RULE["gamma"]
+        rule = chute_fits.TABLE1_LAMBDA1["beta"] * x - chute_fits.TABLE1_LAMBDA1["gamma"]
         cases.append((r, x, r["froude"] / rule, froude_error(case_folder(base, "flowmap", r)) / rule))
     listed = ", ".join(f"{c[2]:.2f} (H = {c[0]['H']:g}, {c[0]['angle']:g}°, h / h_stop = {c[1]:.2f})" for c in cases)
     errs = [c[3] for c in cases if math.isfinite(c[3])]

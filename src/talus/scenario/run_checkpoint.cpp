@@ -59,8 +59,8 @@ LoopState restore_checkpoint(Scenario& sc, io::Checkpoint c, const std::string& 
     loop.next_output = c.run.at("next_output").get<double>();
     loop.next_frame = c.run.at("next_frame").get<double>();
     loop.next_checkpoint = io::null_or_time(c.run.at("next_checkpoint"));
-    // Absent from older checkpoints: their next one was due at next_checkpoint, their cadence unknown.
-    loop.checkpoint_interval = c.run.value("checkpoint_interval", -1.0);
+    // Absent from older checkpoints: their cadence is unknown, as if none had been set.
+    loop.checkpoint_interval = c.run.value("checkpoint_interval", 0.0);
     loop.vtk_times = c.run.at("vtk_times").get<std::vector<double>>();
     loop.next_snapshot = c.run.value("next_snapshot", 0.0);
     loop.snapshots = c.run.value("snapshots", std::size_t{0});
