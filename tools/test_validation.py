@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Checks of validation.py on results made up for the purpose (no simulation runs): the power-law
-fit recovers K and n within four of its standard errors; a point whose realisations split
+fit recovers K and n within four of its standard errors, and the broken one of the centre of mass
+its slopes 2 and 2/3 (Appendix C); a point whose realisations split
 between stable and collapsed is intermittent and its means carry standard errors; Table 1 fitted
 from a synthetic h_stop staircase and flow map generated from the paper's values (Weinhart et
 al. 2012, Table 1, with noise) comes back within four standard errors and is written to
@@ -21,6 +22,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import validation  # noqa: E402
+import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
 from talus.studies import chute_fits  # noqa: E402
 
@@ -143,6 +145,22 @@ class Validation(unittest.TestCase):
         self.assertLess(abs(K - 1.9), 4 * K_err)
         self.assertLess(abs(n - 0.67), 4 * n_err)
         self.assertIsNone(validation.power_fit([(1.0, 2.0), (1.0, 3.0), (1.0, 4.0)]))  # no spread in a
+
+    def test_centre_of_mass_slopes_on_either_side_of_a_3(self):
+        # Huet et al. 2021, Appendix C: slope 2 below a = 3, 2/3 above, continuous at the knee;
+        # three realisations at each of six aspect ratios, 5 % scatter.
+        a = np.repeat([1.0, 1.7, 2.5, 4.0, 6.0, 9.0], 3)
+        knee = validation_centre_of_mass.KNEE
+        y = 2.2 * np.where(a < knee, (a / knee) ** 2, (a / knee) ** (2 / 3)) * np.exp(self.rng.normal(0, 0.05, a.size))
+        fit = validation_centre_of_mass.broken_power_fit(list(zip(a, y)))
+        self.assertLess(abs(fit["n_low"] - 2), 4 * fit["n_low_err"])
+        self.assertLess(abs(fit["n_high"] - 2 / 3), 4 * fit["n_high_err"])
+        self.assertLess(fit["n_low_err"], 0.2)  # the slopes are measured, not merely allowed
+        # A single slope (a^1 throughout) is not mistaken for a transition.
+        fit = validation_centre_of_mass.broken_power_fit(list(zip(a, a * np.exp(self.rng.normal(0, 0.05, a.size)))))
+        self.assertLess(abs(fit["n_low"] - fit["n_high"]), 4 * math.hypot(fit["n_low_err"], fit["n_high_err"]))
+        # One aspect ratio above the knee does not make a slope there.
+        self.assertIsNone(validation_centre_of_mass.broken_power_fit([(1.0, 0.2), (2.0, 0.8), (5.0, 3.0), (5.0, 3.1)]))
 
     def test_mixed_outcomes_are_intermittent(self):
         point = self.base / "huet2021" / "crosses" / "gate_position=0.04"

@@ -24,6 +24,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
 import validation_sensitivity  # noqa: E402
 
@@ -339,6 +340,13 @@ def huet_cases(base=VALIDATION):
     return cases
 
 
+def family_summaries(base=VALIDATION):
+    """{family: the summary.json of each finished run} of the dam-break families."""
+    return {fam.name: [json.loads(f.read_text()) for f in sorted(fam.folder(base).glob("*=*/seed_*/summary.json"))
+                       if finished(f.parent)]
+            for fam in FAMILIES if fam.paper == "huet2021"}
+
+
 def finite(x):
     return x if isinstance(x, (int, float)) and math.isfinite(x) else None
 
@@ -380,6 +388,11 @@ def huet_report(lines, figures, base=VALIDATION):
             lines.append(f"Power law (L_inf - L0)/L0 = K a^n over the {fam}: K = {fit[0]:.3g} ± {fit[2]:.2g}, "
                          f"n = {fit[1]:.3g} ± {fit[3]:.2g} ({len(pts)} aspect ratios).")
     lines += runout_verdict(fits)
+    runs = family_summaries(base)
+    com_lines, com_fits = validation_centre_of_mass.lines_and_fits(runs)
+    if com_lines:
+        path = validation_centre_of_mass.plot(runs, com_fits, out / "fig24_centre_of_mass.png")
+        lines += [""] + com_lines + [f"![centre of mass against a]({path.relative_to(base)})"]
     lines += ["", "Contacts before the gate opens, as the paper's Table III (whole column; the half close to "
               "the gate; the quarter close to the top of the gate): coordination number (contact points per "
               "particle) and contact points on the ground, the side walls and the gate, mean (σ = standard "

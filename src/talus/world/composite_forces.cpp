@@ -136,7 +136,13 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
         contact_manifold(a.shape, part_pose(pa, a, body_a), b.shape, part_pose(pb, b, body_b), &warm), out);
   }
   const PartContact c = narrow_phase(a.shape, part_pose(pa, a, body_a), b.shape, part_pose(pb, b, body_b), &warm);
-  if (!c.touching || !(c.delta_n > 0)) return 0;
+  if (!c.touching || !(c.delta_n > 0)) {
+    // A negative overlap bounds the parts' distance from below (GJK's bound past its margin), so
+    // the pair can sleep as the boxes' separating axes let it; without it every near part pair
+    // ran GJK at every step.
+    if (c.delta_n < 0) *gap = -c.delta_n;
+    return 0;
+  }
   out[0] = {c.normal, c.point, c.delta_n, 0};
   return 1;
 }
