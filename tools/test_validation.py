@@ -24,6 +24,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import validation  # noqa: E402
 import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
+import validation_regimes  # noqa: E402
 from talus.studies import chute_fits  # noqa: E402
 
 
@@ -161,6 +162,21 @@ class Validation(unittest.TestCase):
         self.assertLess(abs(fit["n_low"] - fit["n_high"]), 4 * math.hypot(fit["n_low_err"], fit["n_high_err"]))
         # One aspect ratio above the knee does not make a slope there.
         self.assertIsNone(validation_centre_of_mass.broken_power_fit([(1.0, 0.2), (2.0, 0.8), (5.0, 3.0), (5.0, 3.1)]))
+
+    def test_regime_table_names_each_familys_contact_model_and_gate(self):
+        # Fig. 9: the widest columns of each family of crosses, their regimes and stable tally.
+        def run(l0, regime):
+            return {"L0": l0, "aspect_ratio": 0.085 / l0, "regime": regime,
+                    "dam_break": {"runout_ratio": 0.1 if regime == "stable" else 1.2, "displaced_fraction": 0.01}}
+        runs = {"crosses": [run(0.085, "stable"), run(0.085, "fractured"), run(0.065, "collapsed"), run(0.04, "collapsed")],
+                "crosses_manifold": [run(0.085, "fractured")], "spheres": [run(0.1, "fractured")]}
+        sets = {"crosses": validation.PAPER_CROSSES, "crosses_manifold": validation.MANIFOLD_CROSSES, "spheres": []}
+        text = "\n".join(validation_regimes.lines(runs, sets))
+        self.assertIn("| crosses | one | removed at t = 0 | 0.085 | 1.00 | 1 stable, 1 fractured |", text)
+        self.assertIn("| crosses_manifold | up to four | pulled", text)
+        self.assertNotIn("| 0.04 |", text)  # only the two widest columns
+        self.assertNotIn("spheres", text.split("Stable runs")[1])
+        self.assertIn("Stable runs among these columns: crosses 1 of 3; crosses_manifold 0 of 1.", text)
 
     def test_mixed_outcomes_are_intermittent(self):
         point = self.base / "huet2021" / "crosses" / "gate_position=0.04"

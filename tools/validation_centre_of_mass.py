@@ -14,6 +14,8 @@ KNEE = 3.0  # Huet et al. 2021, Appendix C: the transition 'around H0/L0 = 3'
 PAPER = {
     ("crosses", "com_ratio"): "2 and 2/3 (Fig. 24)",
     ("crosses", "runout_ratio"): "about 1, no visible transition (Fig. 10)",
+    ("crosses_manifold", "com_ratio"): "2 and 2/3 (Fig. 24)",
+    ("crosses_manifold", "runout_ratio"): "about 1, no visible transition (Fig. 10)",
     ("spheres", "com_ratio"): "2 and 2/3 ('presumably true for any particle shape')",
     ("spheres", "runout_ratio"): "1 and 2/3 (Lajeunesse et al. 2005)",
 }
@@ -53,7 +55,7 @@ def lines_and_fits(runs_by_family):
     """The report's table of slopes below and above a = 3, and the fits by (family, key)."""
     fits = {}
     rows = []
-    for family in ("crosses", "spheres"):
+    for family in ("crosses", "crosses_manifold", "spheres"):
         for key in ("com_ratio", "runout_ratio"):
             pts = run_points(runs_by_family, family, key)
             fit = broken_power_fit(pts)
@@ -72,14 +74,14 @@ def lines_and_fits(runs_by_family):
     lines += rows
     lines.append("")
     verdicts = []
-    for family in ("crosses", "spheres"):
+    for family in ("crosses", "crosses_manifold", "spheres"):
         fit = fits.get((family, "com_ratio"))
         if not fit:
             continue
         low = abs(fit["n_low"] - 2.0) / fit["n_low_err"] if fit["n_low_err"] > 0 else float("inf")
         high = abs(fit["n_high"] - 2.0 / 3.0) / fit["n_high_err"] if fit["n_high_err"] > 0 else float("inf")
-        whose = "the paper's crosses" if family == "crosses" else "what the paper expects of any shape (it shows no spheres)"
-        verdicts.append(f"the {family}' centre of mass lies {low:.1f} standard errors from slope 2 below a = 3 and "
+        whose = "the paper's crosses" if family != "spheres" else "what the paper expects of any shape (it shows no spheres)"
+        verdicts.append(f"the {family} centre of mass lies {low:.1f} standard errors from slope 2 below a = 3 and "
                         f"{high:.1f} from 2/3 above, {whose}")
     if verdicts:
         lines += ["Against Eqs. C1 and C3 (slopes 2 and 2/3): " + "; ".join(verdicts) + ".", ""]
@@ -91,7 +93,7 @@ def plot(runs_by_family, fits, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(5.5, 4.2))
-    style = {"crosses": ("s", "k"), "spheres": ("o", "tab:blue")}
+    style = {"crosses": ("s", "k"), "crosses_manifold": ("s", "tab:purple"), "spheres": ("o", "tab:blue")}
     for family, (marker, colour) in style.items():
         pts = run_points(runs_by_family, family, "com_ratio")
         if not pts:
