@@ -11,11 +11,10 @@ import math
 import numpy as np
 
 KNEE = 3.0  # Huet et al. 2021, Appendix C: the transition 'around H0/L0 = 3'
-PAPER = {
+FAMILIES = ("crosses", "crosses_manifold", "spheres")
+PAPER = {  # by particle kind: both families of crosses answer to the paper's crosses
     ("crosses", "com_ratio"): "2 and 2/3 (Fig. 24)",
     ("crosses", "runout_ratio"): "about 1, no visible transition (Fig. 10)",
-    ("crosses_manifold", "com_ratio"): "2 and 2/3 (Fig. 24)",
-    ("crosses_manifold", "runout_ratio"): "about 1, no visible transition (Fig. 10)",
     ("spheres", "com_ratio"): "2 and 2/3 ('presumably true for any particle shape')",
     ("spheres", "runout_ratio"): "1 and 2/3 (Lajeunesse et al. 2005)",
 }
@@ -41,6 +40,10 @@ def broken_power_fit(points, knee=KNEE):
             "c_err": float(se[0]), "n_low_err": float(se[1]), "n_high_err": float(se[2]), "runs": len(pts)}
 
 
+def particles_of(family):
+    return "spheres" if family == "spheres" else "crosses"
+
+
 def run_points(runs_by_family, family, key):
     """(a, y) of every run of a family: runs_by_family maps a family to its summary dicts."""
     out = []
@@ -55,7 +58,7 @@ def lines_and_fits(runs_by_family):
     """The report's table of slopes below and above a = 3, and the fits by (family, key)."""
     fits = {}
     rows = []
-    for family in ("crosses", "crosses_manifold", "spheres"):
+    for family in FAMILIES:
         for key in ("com_ratio", "runout_ratio"):
             pts = run_points(runs_by_family, family, key)
             fit = broken_power_fit(pts)
@@ -63,7 +66,7 @@ def lines_and_fits(runs_by_family):
                 continue
             fits[(family, key)] = fit
             rows.append(f"| {family} | {LABELS[key]} | {fit['runs']} | {fit['n_low']:.2f} ± {fit['n_low_err']:.2f} | "
-                        f"{fit['n_high']:.2f} ± {fit['n_high_err']:.2f} | {PAPER[(family, key)]} |")
+                        f"{fit['n_high']:.2f} ± {fit['n_high_err']:.2f} | {PAPER[(particles_of(family), key)]} |")
     if not rows:
         return [], fits
     lines = ["The centre of mass (Appendix C, Fig. 24): the final displacement of the column's centre of mass, "
@@ -74,13 +77,13 @@ def lines_and_fits(runs_by_family):
     lines += rows
     lines.append("")
     verdicts = []
-    for family in ("crosses", "crosses_manifold", "spheres"):
+    for family in FAMILIES:
         fit = fits.get((family, "com_ratio"))
         if not fit:
             continue
         low = abs(fit["n_low"] - 2.0) / fit["n_low_err"] if fit["n_low_err"] > 0 else float("inf")
         high = abs(fit["n_high"] - 2.0 / 3.0) / fit["n_high_err"] if fit["n_high_err"] > 0 else float("inf")
-        whose = "the paper's crosses" if family != "spheres" else "what the paper expects of any shape (it shows no spheres)"
+        whose = "the paper's crosses" if particles_of(family) == "crosses" else "what the paper expects of any shape (it shows no spheres)"
         verdicts.append(f"the {family} centre of mass lies {low:.1f} standard errors from slope 2 below a = 3 and "
                         f"{high:.1f} from 2/3 above, {whose}")
     if verdicts:
