@@ -25,6 +25,7 @@ import validation  # noqa: E402
 import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
 import validation_regimes  # noqa: E402
+import validation_table3  # noqa: E402
 from talus.studies import chute_fits  # noqa: E402
 
 
@@ -177,6 +178,29 @@ class Validation(unittest.TestCase):
         self.assertNotIn("| 0.04 |", text)  # only the two widest columns
         self.assertNotIn("spheres", text.split("Stable runs")[1])
         self.assertIn("Stable runs among these columns: crosses 1 of 3; crosses_manifold 0 of 1.", text)
+
+    def test_table3_column_from_wall_densities(self):
+        # Runs in the paper's column (L0, W0, H0) at known wall densities, counted with 3 % noise,
+        # must give back that column within the scatter, and its crosses from their number density.
+        L0, W0, H0, per_m3 = 0.12, 0.09, 0.15, 7.0e5
+        areas = validation_table3.wetted_areas(L0, W0, H0)
+        rho = {k: validation_table3.PAPER_WHOLE[k][0] / areas[k] for k in validation_table3.WALLS}
+        runs = []
+        for _ in range(6):  # measured in columns of another size: densities do not depend on it
+            l0, w0, h0 = 0.085, 0.2, 0.084
+            mine = validation_table3.wetted_areas(l0, w0, h0)
+            whole = {k: rho[k] * mine[k] * (1 + self.rng.normal(0, 0.03)) for k in validation_table3.WALLS}
+            runs.append({"L0": l0, "W0": w0, "H0": h0, "particles": per_m3 * l0 * w0 * h0,
+                         "dam_break": {"before_gate": {"whole": whole}}})
+        found = validation_table3.inferred_column(runs)
+        for name, truth in (("L0", L0), ("W0", W0), ("H0", H0), ("crosses", per_m3 * L0 * W0 * H0)):
+            mean, err = found[name]
+            self.assertLess(abs(mean - truth), 4 * err + 1e-12, name)
+            self.assertLess(err / truth, 0.05, name)
+        # In a column as wide as the box, the ground and gate counts leave the side walls short.
+        side, _ = found["side_at_box_width"]
+        self.assertAlmostEqual(side, 169.2 * (W0 / 0.2) ** 2, delta=0.1 * side)
+        self.assertIn("L0 = 0.12", "\n".join(validation_table3.lines({"crosses": runs})))
 
     def test_mixed_outcomes_are_intermittent(self):
         point = self.base / "huet2021" / "crosses" / "gate_position=0.04"

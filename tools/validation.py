@@ -28,6 +28,7 @@ import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
 import validation_regimes  # noqa: E402
 import validation_sensitivity  # noqa: E402
+import validation_table3  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 VALIDATION = ROOT / "validation"
@@ -101,6 +102,10 @@ FAMILIES = [
            ["0.065", "0.085"], 1, NO_FRAMES + ["contact.manifold=true", "dam_break.gate=removed"], "crosses"),
     Family("huet2021", "crosses_manifold_memoryless", "examples/dam_break_crosses.toml", "dam_break.gate_position",
            ["0.04"], 3, MANIFOLD_CROSSES + ["contact.tangential=memoryless"], "crosses"),
+    # Table III's column, as its wall counts and the densities of `crosses` give it
+    # (validation_table3.py): L0 = 12 cm, W0 = 9.3 cm, about 15 cm high.
+    Family("huet2021", "crosses_table3", "examples/dam_break_crosses.toml", "dam_break.gate_position",
+           ["0.12"], 3, PAPER_CROSSES + ["dam_break.width=0.093", "dam_break.count=1200"], "crosses"),
     # Sec. IV C 2, Fig. 17(a): a column longer than five circumscribed diameters (L0 > 13.5 cm),
     # where the walls no longer set the crosses' fabric; 3000 crosses stand about 15 cm high there.
     Family("huet2021", "crosses_wide", "examples/dam_break_crosses.toml", "dam_break.gate_position",
@@ -421,8 +426,8 @@ def huet_report(lines, figures, base=VALIDATION):
     lines += ["", "Contacts before the gate opens, as the paper's Table III (whole column; the half close to "
               "the gate; the quarter close to the top of the gate): coordination number (contact points per "
               "particle) and contact points on the ground, the side walls and the gate, mean (σ = standard "
-              "deviation over the realisations). The paper's crosses at a about 2 (its intermittent cases): "
-              "8.20 (0.07), 79.3, 169.2, 72.8 over the whole column.", "",
+              "deviation over the realisations). The paper's intermittent crosses: 8.20 (0.07), 79.3, 169.2, "
+              "72.8 over the whole column; which column that is, below.", "",
               "| particles | family | L0 (m) | region | coordination | ground | side walls | gate |",
               "|---|---|---|---|---|---|---|---|"]
     for c in cases:
@@ -433,6 +438,7 @@ def huet_report(lines, figures, base=VALIDATION):
                 cells.append("-" if not math.isfinite(m) else (f"{m:.3g} ({sd:.2g})" if math.isfinite(sd) else f"{m:.3g}"))
             lines.append(f"| {c['particles']} | {c['family']} | {c['L0']:.3g} | {region} | " + " | ".join(cells) + " |")
     lines.append("")
+    lines += validation_table3.lines(runs)
     if cases:
         figures.append(plot_huet(cases, out))
         lines += [f"![runout and height ratios against a]({figures[-1].relative_to(base)})", ""]

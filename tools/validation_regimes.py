@@ -1,6 +1,6 @@
 """Huet et al. 2021, Fig. 9 and Sec. V A: which columns of crosses stay standing once the gate
 opens. The paper's simulations are intermittent in part of its map: of 44 runs there, 26 stayed
-stable and 18 collapsed (Appendix D), the columns of its Table III (near a = 2). A column is
+stable and 18 collapsed (Appendix D), the columns of its Table III (validation_table3.py). A column is
 stable when its length and height stay within a particle size and at most 1 % of its crosses
 moved by more than one (talus' collapse_regime); fractured when its height stays but its front
 flowed; collapsed otherwise. Families differ by contact model and gate (validation.py)."""
@@ -22,7 +22,7 @@ def lines(runs_by_family, sets_by_family, widest=2):
     regimes of their runs, the runout ratios and the fraction of crosses displaced."""
     rows, tallies = [], []
     for family, runs in runs_by_family.items():
-        if not family.startswith("crosses") or family in ("crosses_large", "crosses_wide") or not runs:
+        if not family.startswith("crosses") or family in ("crosses_large", "crosses_wide", "crosses_table3") or not runs:
             continue
         points, gate = model_of(sets_by_family[family])
         widths = sorted({r["L0"] for r in runs})[-widest:]
