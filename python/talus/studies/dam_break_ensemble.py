@@ -98,12 +98,18 @@ def finished(run: Path) -> bool:
     return f.exists() and json.loads(f.read_text()).get("stop_reason") != "interrupted"
 
 
+# Simulated seconds between a run's checkpoints: a few minutes of wall time for the small systems,
+# so that a run killed outright (a lost machine, the end of a batch job) loses no more.
+CHECKPOINT_INTERVAL = 0.05
+
+
 def run_command(talus: str, scenario: Path, out: Path, overrides) -> list:
     """The command that runs a case, or resumes it from its newest checkpoint, bit for bit, when an
     earlier run of it was cut off."""
     if (out / "checkpoints" / "latest.h5").exists():
         return [talus, "resume", str(out), "--threads", "1", "--quiet"]
-    cmd = [talus, "run", str(scenario), "--out", str(out), "--threads", "1", "--quiet", "--overwrite"]
+    cmd = [talus, "run", str(scenario), "--out", str(out), "--threads", "1", "--quiet", "--overwrite",
+           "--checkpoint-interval", repr(CHECKPOINT_INTERVAL)]
     for o in overrides:
         cmd += ["--set", o]
     return cmd
