@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "talus/collide/box_box.h"
+#include "talus/collide/box_simplex.h"
 #include "talus/collide/convex_contact_analytic.h"
 #include "talus/collide/gjk.h"
 #include "talus/collide/gjk_epa.h"
@@ -28,7 +29,16 @@ PartContact crust_contact(const ConvexShape& a, const Pose& pa, const ConvexShap
   opt.margin = crusts;
   opt.scale = a.bounding_radius + b.bounding_radius;
   opt.warm_direction = warm && norm2(warm->separation) > 0 ? warm->separation : pa.position - pb.position;
+  const Box* box_a = std::get_if<Box>(&a.core);
+  const Box* box_b = std::get_if<Box>(&b.core);
+  const bool boxes = box_a && box_b;
+  Simplex last;
+  if (boxes && warm && warm->simplex != 0) {
+    last = box_simplex(warm->simplex, *box_a, pa, *box_b, pb);
+    opt.warm_simplex = &last;
+  }
   const GjkResult r = gjk_distance(ca, cb, opt);
+  if (warm) warm->simplex = boxes ? box_simplex_code(r.simplex, pa, pb) : 0;
   PartContact g;
   g.iterations = r.iterations;
   if (r.beyond_margin) {

@@ -8,8 +8,9 @@
 // Returns the closest points and the distance, or `intersecting` when the sets overlap
 // (then `simplex` seeds EPA), or `beyond_margin` as soon as a separating direction proves
 // the distance exceeds options.margin (a cheap "no contact" exit for the crust method).
-// Warm start: pass last step's separation vector (point_a - point_b) as warm_direction; for a
-// persistent contact GJK then usually needs 1-3 iterations.
+// Warm start: pass last step's separation vector (point_a - point_b) as warm_direction; or, better,
+// last step's simplex re-posed (points of A - B) as warm_simplex: a persistent contact then
+// usually needs one iteration.
 #include <cmath>
 #include <limits>
 
@@ -19,6 +20,7 @@ namespace talus {
 
 struct GjkOptions {
   Vec3 warm_direction;  ///< initial guess of point_a - point_b; zero: use centres or +x
+  const Simplex* warm_simplex = nullptr;  ///< points of A - B to start from (replaces warm_direction)
   double margin = std::numeric_limits<double>::infinity();  ///< exit once distance > margin (m)
   double scale = 1;          ///< size of the shapes (m); sets the absolute tolerances
   double tolerance = 1e-10;  ///< distance accuracy relative to scale
@@ -50,6 +52,18 @@ GjkResult gjk_distance(const SupportA& a, const SupportB& b, const GjkOptions& o
   if (!(norm2(v) > 0)) v = Vec3{1, 0, 0};
   Simplex& s = r.simplex;
   double prev2 = std::numeric_limits<double>::infinity();
+  if (opt.warm_simplex && opt.warm_simplex->size > 0) {
+    s = *opt.warm_simplex;
+    bool inside = false;
+    const Vec3 nv = reduce_simplex(s, &inside);
+    if (inside || norm(nv) <= eps) {
+      r.intersecting = true;
+      r.separation = nv;
+      return r;
+    }
+    v = nv;
+    prev2 = norm2(nv);
+  }
   for (r.iterations = 1; r.iterations <= opt.max_iterations; ++r.iterations) {
     const SupportPoint p = minkowski_support(a, b, -v);
     const double v2 = norm2(v), vw = dot(v, p.w);

@@ -43,6 +43,7 @@ inline bool feature_reusable(const PartBudget& budget, int stored_axis, double t
 struct Reuse {
   bool on;
   double refit;
+  bool gjk_warm_start;  ///< WorldSettings::gjk_warm_start
 };
 
 // True while the stored points of a face contact may be refit rather than clipped: the axis is

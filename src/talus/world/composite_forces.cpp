@@ -94,7 +94,10 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
   *gap = 0;
   *query = BoxQuery::stored_feature;
   ContactCache warm;
-  if (previous) warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
+  if (previous) {
+    warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
+    if (!manifold && reuse.gjk_warm_start) warm.simplex = previous->feature;
+  }
   if (manifold) {
     // The manifold is read where it was returned: declaring it first and assigning it cost a
     // memset and a memmove of its ~400 bytes per touching part pair.
@@ -143,7 +146,7 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
     if (c.delta_n < 0) *gap = -c.delta_n;
     return 0;
   }
-  out[0] = {c.normal, c.point, c.delta_n, 0};
+  out[0] = {c.normal, c.point, c.delta_n, reuse.gjk_warm_start ? warm.simplex : 0};
   return 1;
 }
 
@@ -300,7 +303,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   // A body turning by theta moves a point at its bounding radius R by 2 R sin(theta / 2) >= 2 R theta / pi.
   const PairMotion pair_motion{travelled, 0.5 * std::numbers::pi / std::min(p.radius[i], p.radius[j])};
   const bool had_contacts = !previous.empty();
-  const Reuse reuse{settings_.narrow_phase_reuse, settings_.manifold_refit};
+  const Reuse reuse{settings_.narrow_phase_reuse, settings_.manifold_refit, settings_.gjk_warm_start};
   const std::size_t first = contacts.size();
 
   ContactResult total;
@@ -365,7 +368,10 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
         s.part_i = part_a;
         s.part_j = part_b;
         s.feature = points[k].feature;
-        const SubContact* old = had_contacts ? find_previous(previous, s) : nullptr;
+        // One point per part pair: its feature is GJK's simplex, which moves; the pair is the key.
+        const SubContact* old = !had_contacts                   ? nullptr
+                                : settings_.contact_manifold ? find_previous(previous, s)
+                                                              : stored;
         s.spring = old ? old->spring : Vec3{};
         s.normal_prev = old ? old->normal_prev : Vec3{};
         apply_point<Model>(points[k], 1.0 / n, params, reduced_mass, reduced_radius, p.position[i], p.position[j], motion,

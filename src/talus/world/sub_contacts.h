@@ -13,7 +13,7 @@ namespace talus {
 
 struct SubContact {
   std::uint16_t part_i = 0, part_j = 0;  ///< part indices in each body's composite
-  std::uint32_t feature = 0;             ///< manifold feature id (0 for single-point contacts)
+  std::uint32_t feature = 0;             ///< manifold feature id; one point per part pair: GJK's simplex (box_simplex.h)
   Vec3 spring;                           ///< m, tangential memory delta_t
   Vec3 normal_prev;                      ///< previous normal (zero: new contact)
   Vec3 point;                            ///< m, contact point at the last step
@@ -21,6 +21,7 @@ struct SubContact {
   double overlap = 0;                    ///< m
   double share = 1;                      ///< fraction of k_n and eta_n this point carries (1/points of its manifold)
 
+  // The key of a manifold's point (a single point per part pair is found by its parts alone).
   bool same_key(const SubContact& o) const { return part_i == o.part_i && part_j == o.part_j && feature == o.feature; }
 };
 

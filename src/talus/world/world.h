@@ -45,6 +45,13 @@ struct WorldSettings {
   // rank count (whose budgets start afresh) no longer gives the same bits, and at the overlaps
   // of stiff grains (nanometres) the margin lasts a few steps and saves little.
   double manifold_refit = 0;
+  // One point per part pair: two touching box cores start GJK from last step's simplex
+  // (box_simplex.h) instead of last step's normal; about half the narrow phase's time on a
+  // resting column. The same distance and normal to GJK's tolerance, but where two faces lie
+  // parallel the witness points (and so the contact point) are any pair over their overlap,
+  // and the warm start keeps last step's pair where a cold start may pick another: not the same
+  // bits, so off by default until ensembles show the observables unchanged.
+  bool gjk_warm_start = false;
   // Sphere worlds end each particle's step (closing half kick, next opening kick and drift)
   // inside the force pass, as soon as its force is complete; false runs them as separate passes
   // over all particles, the reference the fused form must equal to the bit.
