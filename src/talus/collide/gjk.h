@@ -44,6 +44,17 @@ inline SupportPoint minkowski_support(const SupportA& a, const SupportB& b, cons
   return {pa - pb, pa, pb};
 }
 
+// Shrinks s to its part nearest the origin (*closest); true, with r marked intersecting, when the
+// origin is inside it or within eps of it.
+inline bool origin_enclosed(Simplex& s, double eps, GjkResult& r, Vec3* closest) {
+  bool inside = false;
+  *closest = reduce_simplex(s, &inside);
+  if (!inside && norm(*closest) > eps) return false;
+  r.intersecting = true;
+  r.separation = *closest;
+  return true;
+}
+
 template <class SupportA, class SupportB>
 GjkResult gjk_distance(const SupportA& a, const SupportB& b, const GjkOptions& opt) {
   GjkResult r;
@@ -54,13 +65,8 @@ GjkResult gjk_distance(const SupportA& a, const SupportB& b, const GjkOptions& o
   double prev2 = std::numeric_limits<double>::infinity();
   if (opt.warm_simplex && opt.warm_simplex->size > 0) {
     s = *opt.warm_simplex;
-    bool inside = false;
-    const Vec3 nv = reduce_simplex(s, &inside);
-    if (inside || norm(nv) <= eps) {
-      r.intersecting = true;
-      r.separation = nv;
-      return r;
-    }
+    Vec3 nv;
+    if (origin_enclosed(s, eps, r, &nv)) return r;
     v = nv;
     prev2 = norm2(nv);
   }
@@ -81,13 +87,8 @@ GjkResult gjk_distance(const SupportA& a, const SupportB& b, const GjkOptions& o
     }
     const Simplex before = s;
     s.push(p);
-    bool inside = false;
-    const Vec3 nv = reduce_simplex(s, &inside);
-    if (inside || norm(nv) <= eps) {
-      r.intersecting = true;
-      r.separation = nv;
-      return r;
-    }
+    Vec3 nv;
+    if (origin_enclosed(s, eps, r, &nv)) return r;
     if (norm2(nv) >= prev2) {  // no progress: rounding noise; keep the previous simplex
       s = before;
       break;
