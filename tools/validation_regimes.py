@@ -14,7 +14,8 @@ def model_of(sets):
     points = "one" if "contact.manifold=false" in sets else "up to four"
     gate = "removed at t = 0" if "dam_break.gate=removed" in sets else "pulled (43 m/s^2, friction)"
     memory = ", no memory" if "contact.tangential=memoryless" in sets else ""
-    return f"{points}{memory}", gate
+    warm = ", GJK from last step's simplex" if "contact.gjk_warm_start=true" in sets else ""
+    return f"{points}{memory}{warm}", gate
 
 
 def lines(runs_by_family, sets_by_family, widest=2):
