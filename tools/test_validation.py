@@ -98,7 +98,8 @@ class Validation(unittest.TestCase):
 
     def test_cut_off_run_past_its_gate_is_kept_for_its_state_before_it(self):
         # A collapse cut off after the gate opened keeps its before-gate state (compact copies
-        # it) but stays out of the runout table until it finishes; one cut off before stays out.
+        # it) and counts in Table III, but stays out of the runout table until it finishes; one
+        # cut off before stays out.
         fam = validation.FAMILIES[0]
         saved = validation.VALIDATION
         validation.VALIDATION = self.base / "validation"
@@ -108,12 +109,19 @@ class Validation(unittest.TestCase):
                 run = runs / "gate_position=0.04" / f"seed_{seed}"
                 run.mkdir(parents=True)
                 (run / "summary.json").write_text(json.dumps({
-                    "stop_reason": "interrupted", "dam_break": {"before_gate": {"static_reached": opened}}}))
+                    "stop_reason": "interrupted", "L0": 0.04, "H0": 0.1, "dam_break": {"before_gate": {
+                        "static_reached": opened, "whole": {"coordination_points": 8.1, "gate_contacts": 70}}}}))
             validation.compact(fam, runs)
             kept = fam.folder(validation.VALIDATION) / "gate_position=0.04"
             self.assertTrue(validation.gate_opened(kept / "seed_1"))
             self.assertFalse((kept / "seed_2").exists())
-            self.assertEqual(validation.huet_cases(validation.VALIDATION), [])
+            [case] = validation.huet_cases(validation.VALIDATION)
+            self.assertEqual((case["runs"], case["table3_runs"]), (0, 1))
+            self.assertEqual(case["whole.gate_contacts"][0], 70)
+            lines, figures = [], []
+            validation.huet_report(lines, figures, validation.VALIDATION)
+            self.assertFalse(any(line.startswith("| crosses | crosses | 0.04 | 0 |") for line in lines))  # runout
+            self.assertTrue(any(line.startswith("| crosses | crosses | 0.04 | 1 | whole | 8.1 |") for line in lines))
         finally:
             validation.VALIDATION = saved
 

@@ -342,7 +342,12 @@ def huet_cases(base=VALIDATION):
             continue
         for point in sorted(fam.folder(base).glob("*=*")):
             runs = [json.loads(f.read_text()) for f in sorted(point.glob("seed_*/summary.json")) if finished(f.parent)]
+            # Table III needs only the settled column: a run cut off after its gate opened counts there.
+            settled = [json.loads(f.read_text()) for f in sorted(point.glob("seed_*/summary.json"))
+                       if gate_opened(f.parent)]
             if not runs:
+                if settled:
+                    cases.append(table3_record(fam, point, settled))
                 continue
             db = [r.get("dam_break", {}) for r in runs]
             regimes = [r.get("regime", "") for r in runs]
@@ -351,7 +356,6 @@ def huet_cases(base=VALIDATION):
             collapsed = [g for g in regimes if g != "stable"]
             regime = majority if len(counts) == 1 else ("intermittent" if collapsed and len(collapsed) < len(regimes)
                                                         else majority)
-            before = [d.get("before_gate", {}) for d in db]
             rec = {"family": fam.name, "particles": fam.particles, "point": point.name, "runs": len(runs),
                    "regime": regime, "regimes": counts}
             for key, values in [("aspect_ratio", [r["aspect_ratio"] for r in runs]),
@@ -359,14 +363,36 @@ def huet_cases(base=VALIDATION):
                                 ("height_ratio", [d["height_ratio"] for d in db]),
                                 ("L0", [r["L0"] for r in runs]), ("H0", [r["H0"] for r in runs])]:
                 rec[key], rec[key + "_err"] = mean_err(values)
-            # Table III: per region, the mean and the standard deviation over the realisations.
-            for region in TABLE3_REGIONS:
-                for key in TABLE3_ROWS:
-                    values = [b[region][key] for b in before if key in b.get(region, {})]
-                    m, e = mean_err(values)
-                    rec[f"{region}.{key}"] = (m, e * math.sqrt(len(values)) if values else e)
+            rec.update(table3_cells(settled or runs))
             cases.append(rec)
     return cases
+
+
+def table3_cells(summaries):
+    """Table III: per region and count, the mean and the standard deviation over the realisations,
+    and how many realisations they are."""
+    before = [s.get("dam_break", {}).get("before_gate", {}) for s in summaries]
+    cells = {"table3_runs": len(summaries)}
+    for region in TABLE3_REGIONS:
+        for key in TABLE3_ROWS:
+            values = [b[region][key] for b in before if key in b.get(region, {})]
+            m, e = mean_err(values)
+            cells[f"{region}.{key}"] = (m, e * math.sqrt(len(values)) if values else e)
+    return cells
+
+
+def table3_record(fam, point, settled):
+    """A point none of whose runs has finished: its Table III counts only (runs = 0 keeps it out
+    of the runout table, the fits and the figures)."""
+    nan = float("nan")
+    rec = {"family": fam.name, "particles": fam.particles, "point": point.name, "runs": 0, "regime": "",
+           "regimes": {}}
+    for key in ("aspect_ratio", "runout_ratio", "height_ratio"):
+        rec[key], rec[key + "_err"] = nan, nan
+    for key in ("L0", "H0"):
+        rec[key], rec[key + "_err"] = mean_err([s[key] for s in settled])
+    rec.update(table3_cells(settled))
+    return rec
 
 
 def family_summaries(base=VALIDATION):
@@ -387,7 +413,8 @@ def fmt(m, e, digits=3):
 
 
 def huet_report(lines, figures, base=VALIDATION):
-    cases = huet_cases(base)
+    all_cases = huet_cases(base)
+    cases = [c for c in all_cases if c["runs"] > 0]  # Table III also counts the runs still going
     out = base / "huet2021"
     out.mkdir(parents=True, exist_ok=True)
     runout = [{"particles": c["particles"], "family": c["family"], "aspect_ratio": finite(c["aspect_ratio"]),
@@ -432,17 +459,21 @@ def huet_report(lines, figures, base=VALIDATION):
               "particle) and contact points on the ground, the side walls and the gate, mean (σ = standard "
               "deviation over the realisations). The paper's intermittent crosses: 8.20 (0.07), 79.3, 169.2, "
               "72.8 over the whole column; which column that is, below.", "",
-              "| particles | family | L0 (m) | region | coordination | ground | side walls | gate |",
-              "|---|---|---|---|---|---|---|---|"]
-    for c in cases:
+              "| particles | family | L0 (m) | runs | region | coordination | ground | side walls | gate |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    for c in all_cases:
         for region in TABLE3_REGIONS:
             cells = []
             for key in TABLE3_ROWS:
                 m, sd = c[f"{region}.{key}"]
                 cells.append("-" if not math.isfinite(m) else (f"{m:.3g} ({sd:.2g})" if math.isfinite(sd) else f"{m:.3g}"))
-            lines.append(f"| {c['particles']} | {c['family']} | {c['L0']:.3g} | {region} | " + " | ".join(cells) + " |")
+            lines.append(f"| {c['particles']} | {c['family']} | {c['L0']:.3g} | {c['table3_runs']} | {region} | "
+                         + " | ".join(cells) + " |")
     lines.append("")
-    lines += validation_table3.lines(runs)
+    [table3_family] = [f for f in FAMILIES if f.name == validation_table3.FAMILY]
+    settled = [json.loads(f.read_text()) for f in sorted(table3_family.folder(base).glob("*=*/seed_*/summary.json"))
+               if gate_opened(f.parent)]
+    lines += validation_table3.lines(runs | {validation_table3.FAMILY: settled})
     if cases:
         figures.append(plot_huet(cases, out))
         lines += [f"![runout and height ratios against a]({figures[-1].relative_to(base)})", ""]

@@ -85,7 +85,8 @@ def cell(m, sd):
 
 
 def lines(runs_by_family):
-    """The report's paragraph: the column inferred, and the family run in it beside Table III."""
+    """The report's paragraph: the column inferred, and the family run in it beside Table III
+    (runs_by_family[FAMILY]: its runs whose gate has opened, finished or not)."""
     found = inferred_column(runs_by_family.get(INFERRED_FROM, []))
     if not found:
         return []
@@ -116,8 +117,15 @@ def lines(runs_by_family):
                 sd = math.sqrt(sum((x - m) ** 2 for x in v) / (len(v) - 1)) if len(v) > 1 else None
                 cells.append(cell(m, sd))
             out.append(f"| {region} | Talus | " + " | ".join(cells) + " |")
-        regimes = [r.get("regime", "") for r in runs]
-        out += ["", "Its runs once the gate is removed: " + ", ".join(
-            f"{regimes.count(g)} {g}" for g in ("stable", "fractured", "collapsed") if g in regimes) +
-                " (the paper: intermittent, 26 of 44 stable)."]
+        whole = [r["dam_break"]["before_gate"]["whole"] for r in runs]
+        off = []
+        for k in ("coordination_points",) + WALLS:
+            m = sum(w[k] for w in whole) / len(whole)
+            off.append(f"{k.split('_')[0]} {100 * (m / PAPER_WHOLE[k][0] - 1):+.0f} %")
+        out += ["", "Whole column, Talus against the paper: " + ", ".join(off) + "."]
+        regimes = [r.get("regime", "") for r in runs if r.get("stop_reason") != "interrupted"]
+        if regimes:
+            out += ["", f"Its {len(regimes)} finished runs once the gate is removed: " + ", ".join(
+                f"{regimes.count(g)} {g}" for g in ("stable", "fractured", "collapsed") if g in regimes) +
+                    " (the paper: intermittent, 26 of 44 stable)."]
     return out + [""]
