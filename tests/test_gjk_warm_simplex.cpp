@@ -57,6 +57,7 @@ TEST(GjkWarmSimplex, SameOverlapAndNormalInFewerIterations) {
   for (int k = 0; k < 3000; ++k) {
     PosedPair p = touching_pair(rng, k % 3);
     ContactCache cold, warm;
+    warm.keep_simplex = true;
     crust_contact(box, p.a, box, p.b, &cold);
     crust_contact(box, p.a, box, p.b, &warm);
     for (int step = 0; step < 5; ++step) {
@@ -107,6 +108,7 @@ TEST(GjkWarmSimplex, CoresThatOverlapStillGoToEpa) {
   const ConvexShape box = arm();
   const Pose a{};
   ContactCache warm;
+  warm.keep_simplex = true;
   crust_contact(box, a, box, Pose{{0.001, 0, 3.1e-3}, Quat::from_axis_angle({0, 0, 1}, 0.3)}, &warm);
   // 3 mm thick arms 2.75 mm apart: 0.25 mm of overlap, the cores (crusts 0.1 mm) 0.05 mm into each other.
   const Pose pressed{{0.001, 0, 2.75e-3}, Quat::from_axis_angle({0, 0, 1}, 0.3)};
@@ -114,6 +116,7 @@ TEST(GjkWarmSimplex, CoresThatOverlapStillGoToEpa) {
   const PartContact c = crust_contact(box, a, box, pressed, &cold);
   const PartContact w = crust_contact(box, a, box, pressed, &warm);
   EXPECT_EQ(w.method, ContactMethod::kCrustEpa);
+  EXPECT_EQ(cold.simplex, 0u);  // not asked for: its code is not worked out
   EXPECT_NEAR(w.delta_n, 3e-3 - 2.75e-3, 1e-9);
   EXPECT_NEAR(w.delta_n, c.delta_n, 1e-9);
 }

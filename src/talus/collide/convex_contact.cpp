@@ -38,7 +38,7 @@ PartContact crust_contact(const ConvexShape& a, const Pose& pa, const ConvexShap
     opt.warm_simplex = &last;
   }
   const GjkResult r = gjk_distance(ca, cb, opt);
-  if (warm) warm->simplex = boxes ? box_simplex_code(r.simplex, pa, pb) : 0;
+  if (warm) warm->simplex = boxes && warm->keep_simplex ? box_simplex_code(r.simplex, pa, pb) : 0;
   PartContact g;
   g.iterations = r.iterations;
   if (r.beyond_margin) {

@@ -46,6 +46,7 @@ struct ContactCache {
   Vec3 separation;    ///< last core separation vector point_a - point_b, world (m); zero = cold
   int sat_axis = -1;  ///< last box-box separating axis (0..14), -1 = none
   std::uint32_t simplex = 0;  ///< two box cores' last GJK simplex (box_simplex.h), 0 = none
+  bool keep_simplex = false;  ///< whether to return the final simplex in `simplex` (its code costs a query)
 };
 
 struct NarrowPhaseOptions {

@@ -94,6 +94,7 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
   *gap = 0;
   *query = BoxQuery::stored_feature;
   ContactCache warm;
+  warm.keep_simplex = !manifold && reuse.gjk_warm_start;
   if (previous) {
     warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
     if (!manifold && reuse.gjk_warm_start) warm.simplex = previous->feature;
