@@ -60,7 +60,8 @@ def run_study_command(args, command, *options):
     subprocess.run(cmd, check=False, env=env)
 
 
-KEPT_FILES = ["summary.json", "collapse_speeds.csv", "force_pdf.csv", "fabric.csv", "height_profile.csv"]
+KEPT_FILES = ["summary.json", "collapse_speeds.csv", "force_pdf.csv", "fabric.csv", "height_profile.csv",
+              "fig14_force_network.png"]  # the picture only where `talus plot` drew it: its CSV is megabytes
 
 
 class Family:
@@ -623,11 +624,11 @@ def huet_micro(lines, figures, base=VALIDATION):
                      f"{fmt(direction, err)} | {got} | {paper_fabric(fam, width / size, aspect, got)} |")
     if not runs["crosses_wide"]:
         lines += ["", "The wide column (`crosses_wide`, L0 = 15 cm, 5.5 d_c) has not run yet."]
-    lines += large_column_lines(runs["crosses_large"])
+    lines += large_column_lines(runs["crosses_large"], base)
     lines += ["", f"![speeds, force PDF and fabric]({path.relative_to(base)})", ""]
 
 
-def large_column_lines(folders):
+def large_column_lines(folders, base=VALIDATION):
     """Fig. 14: the contacts of the 12,000-cross column before the gate opens, beside the paper's
     count. Its 98,939 contacts give 2 x 98,939 / 12,000 = 16.5 per cross, twice the 8.20 of its
     own Table III for the small columns, while 98,939 / 12,000 = 8.24 agrees with it: the figure
@@ -657,6 +658,11 @@ def large_column_lines(folders):
                     f"{db['runout_ratio']:.3g} ({db['runout_ratio_low']:.3g} to {db['runout_ratio_high']:.3g} over the "
                     f"front's definitions) and H0/H_inf = {db['height_ratio']:.3g}, the crosses_large row of the "
                     "runout table."]
+        picture = d / "fig14_force_network.png"
+        if picture.exists():  # drawn by `talus plot` in the run's folder and kept (KEPT_FILES)
+            out += ["", "Its contact network before the gate opens (the paper's Fig. 14b), every contact and the ones "
+                    "above five times the mean force:", "",
+                    f"![force network of the large column]({picture.relative_to(base)})"]
     return out
 
 
