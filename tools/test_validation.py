@@ -210,6 +210,17 @@ class Validation(unittest.TestCase):
         self.assertAlmostEqual(side, 169.2 * (W0 / 0.2) ** 2, delta=0.1 * side)
         self.assertIn("L0 = 0.12", "\n".join(validation_table3.lines({"crosses": runs})))
 
+    def test_table3_top_region_from_the_shares_of_the_walls(self):
+        # A column with contacts spread evenly over its height: the region above H0 / 2 holds half
+        # the gate's contacts and a quarter of the side walls'; the paper's shares put its region
+        # at 1 - 26.1 / 72.8 = 0.64 H0.
+        regions = {"whole": {"gate_contacts": 80, "side_wall_contacts": 200},
+                   "near_gate_top": {"gate_contacts": 40, "side_wall_contacts": 50}}
+        line = validation_table3.top_region_reading([{"dam_break": {"before_gate": regions}}] * 2)
+        self.assertIn("Talus' (above H0 / 2) 50 % and 25.0 %", line)
+        self.assertIn("above 0.64 H0", line)
+        self.assertIn("half of the gate's, 17.9 %, as the paper's 19.5 %", line)
+
     def test_mixed_outcomes_are_intermittent(self):
         point = self.base / "huet2021" / "crosses" / "gate_position=0.04"
         outcomes = [("stable", 0.05), ("collapsed", 1.9), ("collapsed", 2.3)]

@@ -80,6 +80,24 @@ def inferred_column(runs):
     return {name: mean_sem([c[i] for c in cols]) for i, name in enumerate(names)} | {"runs": len(cols)}
 
 
+def top_region_reading(runs):
+    """How high the paper's "quarter space close to the top of the gate" starts. Talus reads it as
+    the near-gate half above H0 / 2. With wall contacts spread evenly over the height, the share
+    of the gate's contacts in the region is 1 - z_min / H0, and the side walls' share half that."""
+    paper_gate = PAPER_REGIONS["near_gate_top"]["gate_contacts"][0] / PAPER_WHOLE["gate_contacts"][0]
+    paper_side = PAPER_REGIONS["near_gate_top"]["side_wall_contacts"][0] / PAPER_WHOLE["side_wall_contacts"][0]
+    before = [r["dam_break"]["before_gate"] for r in runs]
+    talus_gate = sum(b["near_gate_top"]["gate_contacts"] for b in before) / sum(b["whole"]["gate_contacts"] for b in before)
+    talus_side = (sum(b["near_gate_top"]["side_wall_contacts"] for b in before) /
+                  sum(b["whole"]["side_wall_contacts"] for b in before))
+    return (f"Near the gate's top the two seem to differ by the region's bounds rather than the packing: the paper's "
+            f"region holds {100 * paper_gate:.0f} % of the gate's contacts and {100 * paper_side:.1f} % of the side "
+            f"walls', Talus' (above H0 / 2) {100 * talus_gate:.0f} % and {100 * talus_side:.1f} %. With contacts spread "
+            f"evenly over the height, the paper's gate share puts its region above {1 - paper_gate:.2f} H0, and "
+            f"the side walls' share half of the gate's, {50 * paper_gate:.1f} %, as the paper's {100 * paper_side:.1f} % "
+            "does: the paper's quarter seems to start higher than H0 / 2, a bound the paper does not give.")
+
+
 def cell(m, sd):
     return "-" if m is None else (f"{m:.3g} ({sd:.2g})" if sd is not None and math.isfinite(sd) else f"{m:.3g}")
 
@@ -123,6 +141,7 @@ def lines(runs_by_family):
             m = sum(w[k] for w in whole) / len(whole)
             off.append(f"{k.split('_')[0]} {100 * (m / PAPER_WHOLE[k][0] - 1):+.0f} %")
         out += ["", "Whole column, Talus against the paper: " + ", ".join(off) + "."]
+        out += ["", top_region_reading(runs)]
         regimes = [r.get("regime", "") for r in runs if r.get("stop_reason") != "interrupted"]
         if regimes:
             out += ["", f"Its {len(regimes)} finished runs once the gate is removed: " + ", ".join(
