@@ -344,8 +344,7 @@ def huet_cases(base=VALIDATION):
         for point in sorted(fam.folder(base).glob("*=*")):
             runs = [json.loads(f.read_text()) for f in sorted(point.glob("seed_*/summary.json")) if finished(f.parent)]
             # Table III needs only the settled column: a run cut off after its gate opened counts there.
-            settled = [json.loads(f.read_text()) for f in sorted(point.glob("seed_*/summary.json"))
-                       if gate_opened(f.parent)]
+            settled = settled_summaries(point, "seed_*/summary.json")
             if not runs:
                 if settled:
                     cases.append(table3_record(fam, point, settled))
@@ -367,6 +366,11 @@ def huet_cases(base=VALIDATION):
             rec.update(table3_cells(settled or runs))
             cases.append(rec)
     return cases
+
+
+def settled_summaries(folder: Path, pattern: str):
+    """The summaries matching `pattern` under `folder` of the runs whose gate has opened."""
+    return [json.loads(f.read_text()) for f in sorted(folder.glob(pattern)) if gate_opened(f.parent)]
 
 
 def table3_cells(summaries):
@@ -472,8 +476,7 @@ def huet_report(lines, figures, base=VALIDATION):
                          + " | ".join(cells) + " |")
     lines.append("")
     [table3_family] = [f for f in FAMILIES if f.name == validation_table3.FAMILY]
-    settled = [json.loads(f.read_text()) for f in sorted(table3_family.folder(base).glob("*=*/seed_*/summary.json"))
-               if gate_opened(f.parent)]
+    settled = settled_summaries(table3_family.folder(base), "*=*/seed_*/summary.json")
     lines += validation_table3.lines(runs | {validation_table3.FAMILY: settled})
     if cases:
         figures.append(plot_huet(cases, out))

@@ -97,7 +97,7 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
   warm.keep_simplex = !manifold && reuse.gjk_warm_start;
   if (previous) {
     warm.separation = previous->normal_prev;  // GJK: the core separation is along the normal
-    if (!manifold && reuse.gjk_warm_start) warm.simplex = previous->feature;
+    if (warm.keep_simplex) warm.simplex = previous->feature;
   }
   if (manifold) {
     // The manifold is read where it was returned: declaring it first and assigning it cost a
@@ -147,7 +147,7 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
     if (c.delta_n < 0) *gap = -c.delta_n;
     return 0;
   }
-  out[0] = {c.normal, c.point, c.delta_n, reuse.gjk_warm_start ? warm.simplex : 0};
+  out[0] = {c.normal, c.point, c.delta_n, warm.simplex};  // 0 unless kept
   return 1;
 }
 
