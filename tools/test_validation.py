@@ -181,7 +181,7 @@ class Validation(unittest.TestCase):
                 "crosses_manifold": [run(0.085, "fractured")], "spheres": [run(0.1, "fractured")]}
         sets = {"crosses": validation.PAPER_CROSSES, "crosses_manifold": validation.MANIFOLD_CROSSES, "spheres": []}
         text = "\n".join(validation_regimes.lines(runs, sets))
-        self.assertIn("| crosses | one | removed at t = 0 | 0.085 | 1.00 | 1 stable, 1 fractured |", text)
+        self.assertIn("| crosses | one, GJK started cold | removed at t = 0 | 0.085 | 1.00 | 1 stable, 1 fractured |", text)
         self.assertIn("| crosses_manifold | up to four | pulled", text)
         self.assertNotIn("| 0.04 |", text)  # only the two widest columns
         self.assertNotIn("spheres", text.split("Stable runs")[1])

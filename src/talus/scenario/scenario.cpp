@@ -301,7 +301,7 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
     ws.contact_manifold = f.get_or<bool>("contact.manifold", false);
     ws.narrow_phase_reuse = f.get_or<bool>("contact.narrow_phase_reuse", true);
     ws.manifold_refit = f.get_or<double>("contact.manifold_refit", 0.0);
-    ws.gjk_warm_start = f.get_or<bool>("contact.gjk_warm_start", false);
+    ws.gjk_warm_start = f.get_or<bool>("contact.gjk_warm_start", true);
     if (!(ws.manifold_refit >= 0 && ws.manifold_refit <= 0.5))
       f.fail("contact.manifold_refit", "must be a fraction of the overlap in [0, 0.5]");
     ws.gravity = f.get_or<Vec3>("domain.gravity", Vec3{0, 0, -9.81});
