@@ -9,6 +9,7 @@ table1.json. (The staircase's noise is kept small: the flow rule's errors are th
 fit, given the fitted h_stop curve, and do not carry the curve's uncertainty.) The flow map's closures, made
 from the paper's Eqs. 52-54, come back from their fits and from its run-length check. Deterministic
 (fixed seed)."""
+import argparse
 import csv
 import json
 import math
@@ -345,6 +346,33 @@ class Validation(unittest.TestCase):
         self.assertAlmostEqual(check["F_long"] - check["F_short"], 0.01)
         self.assertTrue(figure.exists())
         self.assertTrue(any(line.startswith("| 20 | 24° | steady |") for line in lines))
+
+    @unittest.skipUnless(os.environ.get("TALUS_EXECUTABLE"), "needs the talus executable (TALUS_EXECUTABLE)")
+    def test_slurm_mode_writes_one_job_array_per_study_and_runs_nothing(self):
+        # `run --slurm DIR`: each study's array script (one task per run, the staircase one per
+        # lambda) and a submit.sh of them all; no run starts and the committed runs are put back
+        # into the runs folder, so that their tasks end at once.
+        with tempfile.TemporaryDirectory() as tmp:
+            slurm, runs = Path(tmp) / "slurm", Path(tmp) / "runs"
+            args = argparse.Namespace(runs=str(runs), only="hstop,crosses", jobs=1, slurm=str(slurm),
+                                      slurm_time="2:00:00", talus=os.environ["TALUS_EXECUTABLE"])
+            validation.run(args)
+            crosses = (slurm / "huet2021_crosses.sbatch").read_text()
+            family = next(f for f in validation.FAMILIES if f.name == "crosses")
+            self.assertIn(f"#SBATCH --array=0-{len(family.values) * family.seeds - 1}", crosses)
+            self.assertIn("#SBATCH --time=2:00:00", crosses)
+            self.assertIn("--set contact.gjk_warm_start=false", crosses)
+            self.assertIn('--case-index "$SLURM_ARRAY_TASK_ID"', crosses)
+            self.assertIn("#SBATCH --array=0-0", (slurm / "weinhart2012_hstop.sbatch").read_text())
+            submit = (slurm / "submit.sh").read_text().splitlines()
+            self.assertEqual([l for l in submit if l.startswith("sbatch")],
+                             ["sbatch huet2021_crosses.sbatch", "sbatch weinhart2012_hstop.sbatch"])
+            self.assertEqual(list(runs.rglob("timeseries.csv*")), [], "nothing may run")
+            kept = validation.run_folders(validation.VALIDATION / "huet2021" / "crosses")
+            restored = validation.run_folders(runs / "huet2021" / "crosses")
+            finished = {k for k, v in kept.items() if validation.finished(v)}
+            self.assertTrue(finished)
+            self.assertTrue(all(validation.finished(restored[k]) for k in finished))
 
 
 if __name__ == "__main__":

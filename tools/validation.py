@@ -5,6 +5,10 @@
       runs the cases still missing (each family a `python3 -m talus sweep`, finished runs reused, an
       interrupted one run again), then copies every finished run's compact results (summary.json
       and the small CSVs, no VTK, no checkpoints) into validation/<paper>/<family>/.
+  validation.py run --slurm DIR [--slurm-time LIMIT] [--talus BIN] [--runs DIR] [--only FAMILY,...]
+      runs nothing: writes DIR/<paper>_<study>.sbatch, a Slurm job array of each study's runs
+      (one run per task; those finished are reused and end at once), and DIR/submit.sh, which
+      submits them all. `validation.py compact --runs DIR` then keeps what they finished.
   validation.py compact [--runs DIR]
       the copying alone, for runs finished while their study still runs.
   validation.py report
@@ -177,12 +181,21 @@ def run_folders(family_dir: Path):
     return out
 
 
+def slurm_options(args, study_name):
+    """The study command's options that write its Slurm array script instead of running it."""
+    if not args.slurm:
+        return []
+    options = ["--slurm", str(Path(args.slurm).resolve() / f"{study_name}.sbatch")]
+    return options + (["--slurm-time", args.slurm_time] if args.slurm_time else [])
+
+
 def run_chute_study(study, args, runs):
     out = study.folder(runs)
     restore_kept_chute(study, out)
     run_study_command(args, study.command, str(ROOT / study.scenario), *study.options, "--jobs", str(args.jobs),
-          "--out", str(out))
-    compact_chute(study, out)
+                      "--out", str(out), *slurm_options(args, f"{study.paper}_{study.name}"))
+    if not args.slurm:
+        compact_chute(study, out)
 
 
 def copy_present(names, source: Path, dest: Path):
@@ -222,8 +235,21 @@ def compact_chute(study, out: Path):
     print(f"weinhart2012/{study.name}: {kept} finished cases kept under {dest}")
 
 
+def write_submit_script(folder: Path):
+    """folder/submit.sh: sbatch of every array script written there."""
+    scripts = sorted(folder.glob("*.sbatch"))
+    lines = ["#!/bin/sh", "# The validation runs as Slurm job arrays (tools/validation.py run --slurm).", "set -e",
+             'cd "$(dirname "$0")"'] + [f"sbatch {f.name}" for f in scripts]
+    path = folder / "submit.sh"
+    path.write_text("\n".join(lines) + "\n")
+    path.chmod(0o755)
+    print(f"{path}: submits {len(scripts)} job arrays")
+
+
 def run(args):
     runs = Path(args.runs).resolve()
+    if args.slurm:
+        Path(args.slurm).mkdir(parents=True, exist_ok=True)
     only = set(args.only.split(",")) if args.only else None
     for study in CHUTE_STUDIES:
         if not only or study.name in only:
@@ -240,8 +266,11 @@ def run(args):
                    "--jobs", str(args.jobs), "--out", str(out)]
         for s in fam.sets:
             options += ["--set", s]
-        run_study_command(args, "sweep", *options)
-        compact(fam, out)
+        run_study_command(args, "sweep", *options, *slurm_options(args, f"{fam.paper}_{fam.name}"))
+        if not args.slurm:
+            compact(fam, out)
+    if args.slurm:
+        write_submit_script(Path(args.slurm).resolve())
 
 
 def restore_kept(fam: Family, runs_dir: Path):
@@ -1084,6 +1113,8 @@ def main():
     r.add_argument("--runs", default=str(VALIDATION / "runs"))
     r.add_argument("--only", help="studies, comma-separated (" + ",".join([c.name for c in CHUTE_STUDIES] +
                                                                          [f.name for f in FAMILIES]) + ")")
+    r.add_argument("--slurm", metavar="DIR", help="write each study's Slurm job array to DIR instead of running")
+    r.add_argument("--slurm-time", metavar="LIMIT", help="#SBATCH --time of each array task, e.g. 12:00:00")
     c = sub.add_parser("compact", help="keep the finished runs' results now (while a study still runs)")
     c.add_argument("--runs", default=str(VALIDATION / "runs"))
     sub.add_parser("report")
@@ -1095,6 +1126,8 @@ def main():
             compact(fam, fam.folder(Path(args.runs).resolve()))
     elif args.command == "run":
         run(args)
+        if args.slurm:
+            return  # nothing has run yet
     report(args)
 
 
