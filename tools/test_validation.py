@@ -347,6 +347,10 @@ class Validation(unittest.TestCase):
         self.assertTrue(figure.exists())
         self.assertTrue(any(line.startswith("| 20 | 24° | steady |") for line in lines))
 
+    def test_heights_run_ahead_of_the_staircase_form_their_own_group(self):
+        self.assertEqual(validation.height_groups([4, 6, 8, 40, 12.0, 10, 8]), [[4, 6, 8, 10, 12.0], [40]])
+        self.assertEqual(validation.height_groups([]), [])
+
     @unittest.skipUnless(os.environ.get("TALUS_EXECUTABLE"), "needs the talus executable (TALUS_EXECUTABLE)")
     def test_slurm_mode_writes_one_job_array_per_study_and_runs_nothing(self):
         # `run --slurm DIR`: each study's array script (one task per run, the staircase one per

@@ -772,6 +772,17 @@ def determined(block):
                                for k, v in block["params"].items())
 
 
+def height_groups(heights):
+    """The filling heights, sorted, in runs of the staircase's step of 2: [[4, 6, ..., 28], [40]]."""
+    groups = []
+    for h in sorted(set(heights)):
+        if groups and h - groups[-1][-1] <= 2:
+            groups[-1].append(h)
+        else:
+            groups.append([h])
+    return groups
+
+
 def staircase_lines(chute_fits, intervals):
     """Each arrest interval beside the paper's Eq. 35 curve: the angle it gives at the interval's
     h, or the height at the interval's angle, and how far that lies outside the interval."""
@@ -1009,7 +1020,8 @@ def weinhart_report(lines, figures, base=VALIDATION):
     map_lines, flow_rules, map_figure = validation_closures.section(
         chute_fits, flowmap, long_runs, hs["params"] if hs else None, determined(hs), paper_hstop, base, staircase)
     fr = flow_rules["talus"]
-    max_h = max((r["H"] for r in staircase), default=0)
+    groups = height_groups(r["H"] for r in staircase)
+    max_h = groups[0][-1] if groups else 0  # how far the staircase itself has climbed
     table = {"lambda": 1}
     for name, block in (("delta1", hs), ("delta2", hs), ("A", hs), ("beta", fr), ("gamma", fr)):
         usable = determined(hs) and bool(block)
@@ -1036,7 +1048,10 @@ def weinhart_report(lines, figures, base=VALIDATION):
     (out / "table1.json").write_text(json.dumps(table, indent=1) + "\n")
 
     state = ("complete" if complete else
-             f"still running: {len(staircase)} cases so far, filling heights H = 4 to {max_h:g} of the 4 to 40 searched")
+             f"still running: {len(staircase)} cases so far, filling heights H = "
+             f"{' and '.join(f'{g[0]:g} to {g[-1]:g}' if len(g) > 1 else f'{g[0]:g}' for g in groups)} of the 4 to 40 "
+             "searched" + (" (the heights past the first gap were run ahead of the staircase, to bracket its thick "
+                           "layers sooner)" if len(groups) > 1 else ""))
     lines += [f"**The h_stop staircase** (Sect. 6: the angle falls by 0.5° while the layer flows, H rises by 2 "
               f"once it arrests, arrest = E_kin/E_ela < 1e-5 within t = 500) is {state}. Each interval lies "
               "between the largest arrested and the smallest flowing case; a case still slowing down at t = 500 "
