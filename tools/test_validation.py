@@ -172,6 +172,8 @@ class Validation(unittest.TestCase):
         self.assertLess(abs(fit["n_low"] - fit["n_high"]), 4 * math.hypot(fit["n_low_err"], fit["n_high_err"]))
         # One aspect ratio above the knee does not make a slope there.
         self.assertIsNone(validation_centre_of_mass.broken_power_fit([(1.0, 0.2), (2.0, 0.8), (5.0, 3.0), (5.0, 3.1)]))
+        # Nor do two realisations of one column, whose a differ by a fraction of a percent.
+        self.assertIsNone(validation_centre_of_mass.broken_power_fit([(1.0, 0.2), (2.0, 0.8), (6.07, 3.0), (6.09, 3.1)]))
 
     def test_regime_table_names_each_familys_contact_model_and_gate(self):
         # Fig. 9: the widest columns of each family of crosses, their regimes and stable tally.

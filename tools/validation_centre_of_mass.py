@@ -21,13 +21,21 @@ PAPER = {  # by particle kind: both families of crosses answer to the paper's cr
 LABELS = {"com_ratio": "Delta x / x0 (centre of mass)", "runout_ratio": "(L_inf - L0) / L0"}
 
 
+def distinct_aspect_ratios(log_a, tolerance=0.05):
+    """How many aspect ratios the values of log(a) hold: the realisations of one column differ
+    in a by a fraction of a percent (each settles to its own H0), columns of the study by 10 % or
+    more, so values closer than `tolerance` in log(a) are one."""
+    xs = sorted(log_a)
+    return sum(1 for k, x in enumerate(xs) if k == 0 or x - xs[k - 1] > tolerance)
+
+
 def broken_power_fit(points, knee=KNEE):
     """(c, n_low, n_high) and their standard errors through (a, y) pairs, or None when either
     side of the knee has fewer than two distinct aspect ratios (its slope is then not measured)."""
     pts = [(math.log(a / knee), math.log(y)) for a, y in points if a > 0 and y > 0]
-    low = {round(x, 9) for x, _ in pts if x <= 0}
-    high = {round(x, 9) for x, _ in pts if x >= 0}
-    if len(low) < 2 or len(high) < 2 or len(pts) < 4:
+    low = distinct_aspect_ratios([x for x, _ in pts if x <= 0])
+    high = distinct_aspect_ratios([x for x, _ in pts if x >= 0])
+    if low < 2 or high < 2 or len(pts) < 4:
         return None
     design = np.array([[1.0, min(x, 0.0), max(x, 0.0)] for x, _ in pts])
     y = np.array([v for _, v in pts])
