@@ -5,8 +5,8 @@
 // Cost, per body pair whose bounding spheres overlap: the parts are placed once (pose, box axes,
 // capsule), each part pair not asleep (pair_budgets.h) is culled by its capsules (segment
 // distance), and only the survivors run the narrow phase, warm-started from the contact they
-// made last step (SAT axis from the manifold feature id, GJK direction from the previous
-// normal). No heap traffic once the per-entry lists have grown.
+// made last step (SAT axis from the manifold feature id; GJK from last step's simplex, or its
+// normal with contact.gjk_warm_start off). No heap traffic once the per-entry lists have grown.
 #include <omp.h>
 #include <x86intrin.h>
 
