@@ -172,6 +172,10 @@ class Validation(unittest.TestCase):
         self.assertLess(abs(fit["n_low"] - fit["n_high"]), 4 * math.hypot(fit["n_low_err"], fit["n_high_err"]))
         # One aspect ratio above the knee does not make a slope there.
         self.assertIsNone(validation_centre_of_mass.broken_power_fit([(1.0, 0.2), (2.0, 0.8), (5.0, 3.0), (5.0, 3.1)]))
+        # A column that stood is not a point of the law.
+        runs = {"crosses": [{"aspect_ratio": 1.0, "regime": "stable", "dam_break": {"com_ratio": 0.01}},
+                            {"aspect_ratio": 1.7, "regime": "fractured", "dam_break": {"com_ratio": 0.8}}]}
+        self.assertEqual(validation_centre_of_mass.run_points(runs, "crosses", "com_ratio"), [(1.7, 0.8)])
         # Nor do two realisations of one column, whose a differ by a fraction of a percent.
         self.assertIsNone(validation_centre_of_mass.broken_power_fit([(1.0, 0.2), (2.0, 0.8), (6.07, 3.0), (6.09, 3.1)]))
 
