@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "talus/collide/gjk_simplex.h"
+#include "talus/collide/oriented_box.h"
 #include "talus/shape/convex_shape.h"
 #include "talus/shape/pose.h"
 
@@ -20,5 +21,10 @@ std::uint32_t box_simplex_code(const Simplex& s, const Pose& pose_a, const Pose&
 
 // The simplex of `code`'s corner pairs at the boxes' current poses.
 Simplex box_simplex(std::uint32_t code, const Box& a, const Pose& pose_a, const Box& b, const Pose& pose_b);
+
+// The same for boxes placed as OrientedBox (OrientedBoxSupport's simplices): corners from the
+// world axes, no quaternion.
+std::uint32_t box_simplex_code(const Simplex& s, const OrientedBox& a, const OrientedBox& b);
+Simplex box_simplex(std::uint32_t code, const OrientedBox& a, const OrientedBox& b);
 
 }  // namespace talus

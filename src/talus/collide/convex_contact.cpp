@@ -21,24 +21,23 @@ PartContact finish_contact(PartContact g, bool flip) {
   return g;
 }
 
-PartContact crust_contact(const ConvexShape& a, const Pose& pa, const ConvexShape& b, const Pose& pb,
-                              ContactCache* warm) {
-  const PosedSupport ca{&a.core, pa, 0.0}, cb{&b.core, pb, 0.0};
-  const double crusts = a.crust + b.crust;
+namespace {
+
+// The crust method over any two core supports (Wachs et al. 2012). `codec`, when both cores are
+// boxes, turns a GJK simplex into corner ids and back (box_simplex.h) for the warm start.
+template <class SupportA, class SupportB, class Codec>
+PartContact crust_of_cores(const SupportA& ca, double crust_a, const SupportB& cb, double crust_b, double scale,
+                           ContactCache* warm, const Codec* codec) {
+  const double crusts = crust_a + crust_b;
   GjkOptions opt;
   opt.margin = crusts;
-  opt.scale = a.bounding_radius + b.bounding_radius;
-  opt.warm_direction = warm && norm2(warm->separation) > 0 ? warm->separation : pa.position - pb.position;
-  const Box* box_a = std::get_if<Box>(&a.core);
-  const Box* box_b = std::get_if<Box>(&b.core);
-  const bool boxes = box_a && box_b;
-  Simplex last;
-  if (boxes && warm && warm->simplex != 0) {
-    last = box_simplex(warm->simplex, *box_a, pa, *box_b, pb);
-    opt.warm_simplex = &last;
-  }
+  opt.scale = scale;
+  opt.warm_direction = warm && norm2(warm->separation) > 0 ? warm->separation : ca.centre() - cb.centre();
+  const bool from_simplex = codec && warm && warm->simplex != 0;
+  const Simplex last = from_simplex ? codec->simplex(warm->simplex) : Simplex{};  // built in place
+  if (from_simplex) opt.warm_simplex = &last;
   const GjkResult r = gjk_distance(ca, cb, opt);
-  if (warm) warm->simplex = boxes && warm->keep_simplex ? box_simplex_code(r.simplex, pa, pb) : 0;
+  if (warm) warm->simplex = codec && warm->keep_simplex ? codec->code(r.simplex) : 0;
   PartContact g;
   g.iterations = r.iterations;
   if (r.beyond_margin) {
@@ -55,8 +54,8 @@ PartContact crust_contact(const ConvexShape& a, const Pose& pa, const ConvexShap
     g.method = ContactMethod::kCrustGjk;
     g.normal = r.separation / r.distance;
     g.delta_n = crusts - r.distance;
-    g.point_a = r.point_a - g.normal * a.crust;
-    g.point_b = r.point_b + g.normal * b.crust;
+    g.point_a = r.point_a - g.normal * crust_a;
+    g.point_b = r.point_b + g.normal * crust_b;
     return finish_contact(g);
   }
   // Cores intersect: depth of the rounded shapes = core penetration + both crusts.
@@ -66,21 +65,54 @@ PartContact crust_contact(const ConvexShape& a, const Pose& pa, const ConvexShap
     g.method = ContactMethod::kCrustEpa;
     g.normal = -e.normal;
     g.delta_n = e.depth + crusts;
-    g.point_a = e.point_a - g.normal * a.crust;
-    g.point_b = e.point_b + g.normal * b.crust;
+    g.point_a = e.point_a - g.normal * crust_a;
+    g.point_b = e.point_b + g.normal * crust_b;
   } else {
     // Flat difference (e.g. two coincident sphere centres): overlap along the centre line,
-    // measured by the supports; never NaN.
+    // measured by the supports of the rounded shapes; never NaN.
     g.method = ContactMethod::kFallback;
-    g.normal = normalized_or_zero(pa.position - pb.position);
+    g.normal = normalized_or_zero(ca.centre() - cb.centre());
     if (norm2(g.normal) == 0) g.normal = Vec3{0, 0, 1};
-    const PosedSupport sa{&a.core, pa, a.crust}, sb{&b.core, pb, b.crust};
-    g.point_a = sa.support(-g.normal);
-    g.point_b = sb.support(g.normal);
+    g.point_a = ca.support(-g.normal) + normalized_or_zero(-g.normal) * crust_a;
+    g.point_b = cb.support(g.normal) + normalized_or_zero(g.normal) * crust_b;
     g.delta_n = dot(g.point_b - g.point_a, g.normal);
   }
   if (warm) warm->separation = Vec3{};  // no separating vector to reuse
   return finish_contact(g);
+}
+
+struct PosedBoxCodec {
+  const Box &a, &b;
+  const Pose &pa, &pb;
+  Simplex simplex(std::uint32_t code) const { return box_simplex(code, a, pa, b, pb); }
+  std::uint32_t code(const Simplex& s) const { return box_simplex_code(s, pa, pb); }
+};
+
+struct OrientedBoxCodec {
+  const OrientedBox &a, &b;
+  Simplex simplex(std::uint32_t code) const { return box_simplex(code, a, b); }
+  std::uint32_t code(const Simplex& s) const { return box_simplex_code(s, a, b); }
+};
+
+}  // namespace
+
+PartContact crust_contact(const ConvexShape& a, const Pose& pa, const ConvexShape& b, const Pose& pb,
+                              ContactCache* warm) {
+  const PosedSupport ca{&a.core, pa, 0.0}, cb{&b.core, pb, 0.0};
+  const Box* box_a = std::get_if<Box>(&a.core);
+  const Box* box_b = std::get_if<Box>(&b.core);
+  const double scale = a.bounding_radius + b.bounding_radius;
+  if (!(box_a && box_b))
+    return crust_of_cores(ca, a.crust, cb, b.crust, scale, warm, static_cast<const PosedBoxCodec*>(nullptr));
+  const PosedBoxCodec codec{*box_a, *box_b, pa, pb};
+  return crust_of_cores(ca, a.crust, cb, b.crust, scale, warm, &codec);
+}
+
+PartContact crust_box_box_contact(const OrientedBox& core_a, double crust_a, const OrientedBox& core_b,
+                                  double crust_b, double scale, ContactCache* warm) {
+  const OrientedBoxSupport ca{&core_a}, cb{&core_b};
+  const OrientedBoxCodec codec{core_a, core_b};
+  return crust_of_cores(ca, crust_a, cb, crust_b, scale, warm, &codec);
 }
 
 PartContact narrow_phase(const ConvexShape& a, const Pose& pa, const ConvexShape& b, const Pose& pb,

@@ -14,6 +14,7 @@
 // ContactCache carries the last separation vector / SAT axis per pair to warm-start the next step.
 #include <cstdint>
 
+#include "talus/collide/oriented_box.h"
 #include "talus/shape/convex_shape.h"
 #include "talus/shape/pose.h"
 
@@ -65,6 +66,12 @@ bool parts_within(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b
 // The crust method alone (any pair of shapes), for tests and for callers that want one model.
 PartContact crust_contact(const ConvexShape& a, const Pose& pose_a, const ConvexShape& b, const Pose& pose_b,
                               ContactCache* warm = nullptr);
+
+// The crust method for two box cores already placed in the world (their axes as vectors): the
+// answer of crust_contact to GJK's tolerance, without a quaternion per support query. scale is
+// the two parts' bounding radii summed, as crust_contact uses.
+PartContact crust_box_box_contact(const OrientedBox& core_a, double crust_a, const OrientedBox& core_b,
+                                  double crust_b, double scale, ContactCache* warm = nullptr);
 
 // Fills point from point_a/point_b, sets touching; swaps roles A<->B when flip is true.
 PartContact finish_contact(PartContact g, bool flip = false);

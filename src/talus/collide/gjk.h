@@ -64,7 +64,7 @@ GjkResult gjk_distance(const SupportA& a, const SupportB& b, const GjkOptions& o
   Simplex& s = r.simplex;
   double prev2 = std::numeric_limits<double>::infinity();
   if (opt.warm_simplex && opt.warm_simplex->size > 0) {
-    s = *opt.warm_simplex;
+    s.assign(*opt.warm_simplex);
     Vec3 nv;
     if (origin_enclosed(s, eps, r, &nv)) return r;
     v = nv;
@@ -85,12 +85,13 @@ GjkResult gjk_distance(const SupportA& a, const SupportB& b, const GjkOptions& o
       for (int k = 0; k < s.size; ++k) repeated = repeated || norm2(s.p[k].w - p.w) <= eps * eps;
       if (repeated) break;
     }
-    const Simplex before = s;
+    Simplex before;
+    before.assign(s);
     s.push(p);
     Vec3 nv;
     if (origin_enclosed(s, eps, r, &nv)) return r;
     if (norm2(nv) >= prev2) {  // no progress: rounding noise; keep the previous simplex
-      s = before;
+      s.assign(before);
       break;
     }
     prev2 = norm2(nv);

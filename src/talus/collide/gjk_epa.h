@@ -46,7 +46,7 @@ EpaResult epa_penetration(const SupportA& a, const SupportB& b, const Simplex& s
   using epa_detail::Face;
   EpaResult r;
   const double eps = tolerance * scale;
-  std::vector<SupportPoint> pts(seed.p.begin(), seed.p.begin() + seed.size);
+  std::vector<SupportPoint> pts(seed.p.data(), seed.p.data() + seed.size);
 
   // Grow the seed into a tetrahedron with supports away from its affine hull.
   static const Vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};

@@ -91,12 +91,13 @@ Vec3 reduce_simplex(Simplex& s, bool* inside) {
     s.lambda = c.lambda;
     return c.v;
   }
-  Simplex r;
+  // In place: the kept indices rise, so each point moves down onto one already read.
   for (int k = 0; k < c.n; ++k) {
-    r.push(s.p[c.idx[k]]);
-    r.lambda[k] = c.lambda[k];
+    if (c.idx[k] != k) s.p[k] = s.p[c.idx[k]];
+    s.lambda[k] = c.lambda[k];
   }
-  s = r;
+  for (int k = c.n; k < 4; ++k) s.lambda[k] = 0;
+  s.size = c.n;
   return c.v;
 }
 

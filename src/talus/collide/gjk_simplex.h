@@ -7,6 +7,7 @@
 // instead of dividing by a vanishing determinant.
 #include <array>
 
+#include "talus/math/uninitialized_array.h"
 #include "talus/math/vec3.h"
 
 namespace talus {
@@ -18,11 +19,17 @@ struct SupportPoint {
 };
 
 struct Simplex {
-  std::array<SupportPoint, 4> p;
+  UninitializedArray<SupportPoint, 4> p;  ///< the first `size` are set; a warm-started GJK builds one per query
   std::array<double, 4> lambda{};  ///< barycentric weights of the closest point (after reduce)
   int size = 0;
 
   void push(const SupportPoint& s) { p[size++] = s; }
+  // Copies only the points in use: GJK keeps a copy per iteration, mostly of one or two points.
+  void assign(const Simplex& o) {
+    for (int k = 0; k < o.size; ++k) p[k] = o.p[k];
+    lambda = o.lambda;
+    size = o.size;
+  }
 };
 
 // Shrinks s to the sub-simplex holding the point closest to the origin; returns that point.

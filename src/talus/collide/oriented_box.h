@@ -23,6 +23,20 @@ inline void rotation_axes(const Quat& q, Vec3 axes[3]) {
   axes[2] = {2 * (xz + wy), 2 * (yz - wx), 1 - 2 * (xx + yy)};
 }
 
+// A placed box as GJK's support mapping: three dot products and no quaternion, the box's
+// axes being already in the world frame. Ties (d normal to an axis) take the + corner, as
+// support(Box) does in the box's own frame.
+struct OrientedBoxSupport {
+  const OrientedBox* box;
+  Vec3 support(const Vec3& d) const {
+    const OrientedBox& b = *box;
+    return b.centre + b.axis[0] * (dot(b.axis[0], d) >= 0 ? b.half.x : -b.half.x) +
+           b.axis[1] * (dot(b.axis[1], d) >= 0 ? b.half.y : -b.half.y) +
+           b.axis[2] * (dot(b.axis[2], d) >= 0 ? b.half.z : -b.half.z);
+  }
+  Vec3 centre() const { return box->centre; }
+};
+
 inline OrientedBox oriented_box(const Vec3& half, const Pose& pose) {
   OrientedBox b;
   b.centre = pose.position;

@@ -80,6 +80,13 @@ double deepest(const ContactManifold& m) {
   return d;
 }
 
+// A placed box part's core (the box eroded by its crust), placed as the part is.
+OrientedBox core_box(const PlacedPart& placed, const CompositePart& part) {
+  OrientedBox core = placed.box;
+  core.half = std::get<Box>(part.shape.core).half_extents;
+  return core;
+}
+
 // How two boxes' points were found.
 enum class BoxQuery { full, stored_feature, refit };
 
@@ -139,7 +146,13 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
     return touching_points(
         contact_manifold(a.shape, part_pose(pa, a, body_a), b.shape, part_pose(pb, b, body_b), &warm), out);
   }
-  const PartContact c = narrow_phase(a.shape, part_pose(pa, a, body_a), b.shape, part_pose(pb, b, body_b), &warm);
+  // Two box cores run GJK on their placed axes; started cold (contact.gjk_warm_start = false)
+  // they keep the posed shapes' path, whose rounding the runs made before the warm start had.
+  const bool placed_cores = reuse.gjk_warm_start && pa.is_box && pb.is_box && a.shape.crust + b.shape.crust > 0;
+  const PartContact c = placed_cores
+                            ? crust_box_box_contact(core_box(pa, a), a.shape.crust, core_box(pb, b), b.shape.crust,
+                                                    a.shape.bounding_radius + b.shape.bounding_radius, &warm)
+                            : narrow_phase(a.shape, part_pose(pa, a, body_a), b.shape, part_pose(pb, b, body_b), &warm);
   if (!c.touching || !(c.delta_n > 0)) {
     // A negative overlap bounds the parts' distance from below (GJK's bound past its margin), so
     // the pair can sleep as the boxes' separating axes let it; without it every near part pair
