@@ -11,12 +11,6 @@ std::uint32_t corner_id(const Vec3& world, const Pose& pose) {
   return (local.x >= 0 ? 1u : 0u) | (local.y >= 0 ? 2u : 0u) | (local.z >= 0 ? 4u : 0u);
 }
 
-std::uint32_t corner_id(const Vec3& world, const OrientedBox& box) {
-  const Vec3 r = world - box.centre;
-  return (dot(r, box.axis[0]) >= 0 ? 1u : 0u) | (dot(r, box.axis[1]) >= 0 ? 2u : 0u) |
-         (dot(r, box.axis[2]) >= 0 ? 4u : 0u);
-}
-
 Vec3 corner(const Box& box, std::uint32_t id, const Pose& pose) {
   const Vec3& h = box.half_extents;
   return pose.to_parent({id & 1u ? h.x : -h.x, id & 2u ? h.y : -h.y, id & 4u ? h.z : -h.z});
@@ -61,12 +55,17 @@ Simplex box_simplex(std::uint32_t code, const Box& a, const Pose& pose_a, const 
       code, [&](std::uint32_t id) { return corner(a, id, pose_a); }, [&](std::uint32_t id) { return corner(b, id, pose_b); });
 }
 
-std::uint32_t box_simplex_code(const Simplex& s, const OrientedBox& a, const OrientedBox& b) {
-  return code_of(s, [&](const Vec3& x) { return corner_id(x, a); }, [&](const Vec3& x) { return corner_id(x, b); });
+std::uint32_t box_simplex_code(const Simplex& s) {
+  std::uint32_t code = static_cast<std::uint32_t>(s.size);
+  for (int k = 0; k < s.size; ++k) code |= (s.p[k].corners & 63u) << (kCountBits + kPairBits * k);
+  return code;
 }
 
 Simplex box_simplex(std::uint32_t code, const OrientedBox& a, const OrientedBox& b) {
-  return simplex_of(code, [&](std::uint32_t id) { return corner(a, id); }, [&](std::uint32_t id) { return corner(b, id); });
+  Simplex s = simplex_of(
+      code, [&](std::uint32_t id) { return corner(a, id); }, [&](std::uint32_t id) { return corner(b, id); });
+  for (int k = 0; k < s.size; ++k) s.p[k].corners = code >> (kCountBits + kPairBits * k) & 63u;
+  return s;
 }
 
 }  // namespace talus

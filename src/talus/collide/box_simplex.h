@@ -22,9 +22,10 @@ std::uint32_t box_simplex_code(const Simplex& s, const Pose& pose_a, const Pose&
 // The simplex of `code`'s corner pairs at the boxes' current poses.
 Simplex box_simplex(std::uint32_t code, const Box& a, const Pose& pose_a, const Box& b, const Pose& pose_b);
 
-// The same for boxes placed as OrientedBox (OrientedBoxSupport's simplices): corners from the
-// world axes, no quaternion.
-std::uint32_t box_simplex_code(const Simplex& s, const OrientedBox& a, const OrientedBox& b);
+// The same for boxes placed as OrientedBox: corners from the world axes, no quaternion. The
+// simplex of OrientedBoxSupport's queries names its corners (SupportPoint::corners), so its code
+// is read off without looking at the points.
+std::uint32_t box_simplex_code(const Simplex& s);
 Simplex box_simplex(std::uint32_t code, const OrientedBox& a, const OrientedBox& b);
 
 }  // namespace talus

@@ -91,7 +91,7 @@ struct PosedBoxCodec {
 struct OrientedBoxCodec {
   const OrientedBox &a, &b;
   Simplex simplex(std::uint32_t code) const { return box_simplex(code, a, b); }
-  std::uint32_t code(const Simplex& s) const { return box_simplex_code(s, a, b); }
+  std::uint32_t code(const Simplex& s) const { return box_simplex_code(s); }
 };
 
 }  // namespace

@@ -38,10 +38,20 @@ struct GjkResult {
   Simplex simplex;       ///< final simplex (EPA seed when intersecting)
 };
 
+// Supports that name their corner (OrientedBoxSupport) give it to the point, for the simplex's code.
 template <class SupportA, class SupportB>
 inline SupportPoint minkowski_support(const SupportA& a, const SupportB& b, const Vec3& d) {
-  const Vec3 pa = a.support(d), pb = b.support(-d);
-  return {pa - pb, pa, pb};
+  if constexpr (requires(std::uint32_t* id) {
+                  a.support(d, id);
+                  b.support(d, id);
+                }) {
+    std::uint32_t corner_a, corner_b;
+    const Vec3 pa = a.support(d, &corner_a), pb = b.support(-d, &corner_b);
+    return {pa - pb, pa, pb, corner_a | corner_b << 3};
+  } else {
+    const Vec3 pa = a.support(d), pb = b.support(-d);
+    return {pa - pb, pa, pb};
+  }
 }
 
 // Shrinks s to its part nearest the origin (*closest); true, with r marked intersecting, when the

@@ -6,6 +6,7 @@
 // same result, and degenerate (collinear / flat) simplices fall back to their best face
 // instead of dividing by a vanishing determinant.
 #include <array>
+#include <cstdint>
 
 #include "talus/math/uninitialized_array.h"
 #include "talus/math/vec3.h"
@@ -16,6 +17,7 @@ struct SupportPoint {
   Vec3 w;  ///< a - b, a point of the Minkowski difference (m)
   Vec3 a;  ///< support point on A (m)
   Vec3 b;  ///< support point on B (m)
+  std::uint32_t corners = 0;  ///< two placed boxes: the corner ids of a (bits 0-2) and b (3-5), box_simplex.h
 };
 
 struct Simplex {

@@ -2,6 +2,8 @@
 // A box placed in the world with its axes as vectors: the form the box-box separating axis test
 // and the clipping manifold read, built once per part per body pair instead of turning the
 // quaternion into a matrix for every query.
+#include <cstdint>
+
 #include "talus/math/quat.h"
 #include "talus/math/vec3.h"
 #include "talus/shape/pose.h"
@@ -29,10 +31,16 @@ inline void rotation_axes(const Quat& q, Vec3 axes[3]) {
 struct OrientedBoxSupport {
   const OrientedBox* box;
   Vec3 support(const Vec3& d) const {
+    std::uint32_t corner;
+    return support(d, &corner);
+  }
+  // The same, naming the corner: bit k set on the + side of axis k (box_simplex.h).
+  Vec3 support(const Vec3& d, std::uint32_t* corner) const {
     const OrientedBox& b = *box;
-    return b.centre + b.axis[0] * (dot(b.axis[0], d) >= 0 ? b.half.x : -b.half.x) +
-           b.axis[1] * (dot(b.axis[1], d) >= 0 ? b.half.y : -b.half.y) +
-           b.axis[2] * (dot(b.axis[2], d) >= 0 ? b.half.z : -b.half.z);
+    const bool x = dot(b.axis[0], d) >= 0, y = dot(b.axis[1], d) >= 0, z = dot(b.axis[2], d) >= 0;
+    *corner = (x ? 1u : 0u) | (y ? 2u : 0u) | (z ? 4u : 0u);
+    return b.centre + b.axis[0] * (x ? b.half.x : -b.half.x) + b.axis[1] * (y ? b.half.y : -b.half.y) +
+           b.axis[2] * (z ? b.half.z : -b.half.z);
   }
   Vec3 centre() const { return box->centre; }
 };

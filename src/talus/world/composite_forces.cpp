@@ -317,6 +317,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   // A body turning by theta moves a point at its bounding radius R by 2 R sin(theta / 2) >= 2 R theta / pi.
   const PairMotion pair_motion{travelled, 0.5 * std::numbers::pi / std::min(p.radius[i], p.radius[j])};
   const bool had_contacts = !previous.empty();
+  const bool one_point = !settings_.contact_manifold;
   const Reuse reuse{settings_.narrow_phase_reuse, settings_.manifold_refit, settings_.gjk_warm_start};
   const std::size_t first = contacts.size();
 
@@ -339,13 +340,15 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
       const CompositePart &shape_a = si.parts[a], &shape_b = sj.parts[b];
       const auto part_a = static_cast<std::uint16_t>(a), part_b = static_cast<std::uint16_t>(b);
       // A touching box pair whose stored feature is still good overlaps: its capsules need no test.
+      // Nor does a pair that touched last step with one point per part pair: GJK, started from
+      // that contact, answers in about one iteration whether it still touches.
       const SubContact* stored = nullptr;
       bool looked_up = false;
-      if (reuse.on && budget.axis >= 0 && had_contacts) {
+      if (had_contacts && (one_point || (reuse.on && budget.axis >= 0))) {
         stored = find_part_pair(previous, part_a, part_b);
         looked_up = true;
       }
-      if (!(stored && feature_reusable(budget, sat_axis_of(stored->feature), travelled))) {
+      if (!(stored && (one_point || feature_reusable(budget, sat_axis_of(stored->feature), travelled)))) {
         const double d2 =
             segment_distance2(pa.box.centre, capsule_axis(pa, shape_a), pb.box.centre, capsule_axis(pb, shape_b));
         const double reach = shape_a.capsule.radius + shape_b.capsule.radius;
