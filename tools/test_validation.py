@@ -353,6 +353,25 @@ class Validation(unittest.TestCase):
         self.assertTrue(figure.exists())
         self.assertTrue(any(line.startswith("| 20 | 24° | steady |") for line in lines))
 
+    def test_drift_across_the_averaging_window(self):
+        # A flow still speeding up by 0.03 per 100 time units under block noise of 0.01 is found
+        # drifting (its slope within four standard errors of the truth, more than two from zero);
+        # a flat series of the same noise is not, and the report says which one drifts.
+        rows = []
+        for H, slope in ((10, 3e-4), (20, 0.0)):
+            row = {"lambda": 1, "H": H, "angle": 24, "flow_state": "steady", "h": 0.9 * H, "froude": 0.5}
+            rows.append(row)
+            folder = validation_closures.case_folder(self.base, "flowmap", row)
+            write_csv(folder / "chute_series.csv",
+                      [{"time": 400 + k, "froude": 0.5 + slope * (k - 50) + self.rng.normal(0, 0.01)} for k in range(100)])
+        drifting = validation_closures.window_trend(validation_closures.case_folder(self.base, "flowmap", rows[0]))
+        flat = validation_closures.window_trend(validation_closures.case_folder(self.base, "flowmap", rows[1]))
+        self.assertLess(abs(drifting["slope"] - 3e-4), 4 * drifting["slope_err"])
+        self.assertGreater(drifting["slope"], 2 * drifting["slope_err"])
+        self.assertLess(abs(flat["slope"]), 4 * flat["slope_err"])
+        [text, _] = validation_closures.trend_lines(rows, self.base)
+        self.assertIn("1 of 2 flows drift by more than two (H = 10 at 24°", text)
+
     def test_heights_run_ahead_of_the_staircase_form_their_own_group(self):
         self.assertEqual(validation.height_groups([4, 6, 8, 40, 12.0, 10, 8]), [[4, 6, 8, 10, 12.0], [40]])
         self.assertEqual(validation.height_groups([]), [])

@@ -66,6 +66,56 @@ def froude_error(folder: Path):
     return float(np.std(means, ddof=1) / math.sqrt(BATCHES))
 
 
+def window_trend(folder: Path):
+    """The drift of a case's Froude number across its averaging window: the slope of a line
+    through its BATCHES batch means (per unit time) with the slope's standard error from their
+    scatter about the line, and the window's length; None when the series is too short."""
+    path = folder / "chute_series.csv"
+    if not path.exists():
+        return None
+    with open(path) as f:
+        rows = [(float(r["time"]), float(r["froude"])) for r in csv.DictReader(f)]
+    if len(rows) < 2 * BATCHES:
+        return None
+    batches = np.array_split(np.array(rows), BATCHES)
+    t = np.array([b[:, 0].mean() for b in batches])
+    F = np.array([b[:, 1].mean() for b in batches])
+    (slope, intercept), cov = np.polyfit(t, F, 1, cov=True)
+    return {"slope": float(slope), "slope_err": float(math.sqrt(cov[0, 0])), "window": rows[-1][0] - rows[0][0],
+            "F": float(F.mean())}
+
+
+def trend_lines(rows, base: Path, end_time=500.0, paper_end=2000.0):
+    """Whether the steady flows still drift within their averaging window: each one's change of F
+    across the window in its standard errors, and the change a drift that size would make by the
+    paper's end time, against the flow rule's scatter (Table 1's err(F)). Evidence that the runs
+    had settled, not a substitute for running them longer: a drift slower than the window shows
+    escapes it."""
+    trends = []
+    for r in rows:
+        tr = window_trend(case_folder(base, "flowmap", r))
+        if tr and tr["slope_err"] > 0:
+            trends.append((r, tr))
+    if not trends:
+        return []
+    z = [abs(tr["slope"]) / tr["slope_err"] for _, tr in trends]
+    significant = [(r, tr) for (r, tr), zz in zip(trends, z) if zz > 2]
+    worst_r, worst = max(trends, key=lambda rt: abs(rt[1]["slope"]) * (paper_end - end_time))
+    reach = abs(worst["slope"]) * (paper_end - end_time)
+    text = (f"Across each steady flow's averaging window ({trends[0][1]['window']:.0f} time units, {BATCHES} batch means), "
+            f"F drifts by {min(z):.1f} to {max(z):.1f} standard errors of the drift; "
+            f"{len(significant)} of {len(trends)} flows drift by more than two")
+    if significant:
+        text += " (" + ", ".join(f"H = {r['H']:g} at {r['angle']:g}°: {tr['slope'] * 100:+.3f} per 100 time units"
+                                 for r, tr in significant) + ")"
+    text += (f". The largest drift, carried on to t = {paper_end:g}, would move F by {reach:.3f} "
+             f"(H = {worst_r['H']:g} at {worst_r['angle']:g}°), against the flow rule's scatter err(F) = {PAPER_ERR['F']}")
+    text += (": flows still drifting at t = 500 are not yet steady in the paper's sense (F constant over its last 200 "
+             "time units), and their F at t = 500 is a lower or upper bound, not the steady value." if significant
+             else ": within their errors the flows had settled by the start of the window.")
+    return [text, ""]
+
+
 def flow_rule(chute_fits, rows, hs):
     """Eq. (47) through the steady flows, h_stop from Eq. (35) with the parameters hs."""
     if len(rows) < 3:
@@ -251,6 +301,7 @@ def section(chute_fits, flowmap, long_rows, hs_talus, talus_determined, paper_hs
         lines.append("")
     else:
         lines += ["None has finished yet: until one has, the shorter runs are not shown to be long enough.", ""]
+    lines += trend_lines(rows, base)
     figure = plot(chute_fits, flowmap, fits, paper_hstop, base / "weinhart2012", steady(near_stop)) if rows else None
     return lines, fits, figure
 
