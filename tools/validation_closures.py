@@ -102,7 +102,8 @@ def trend_lines(rows, base: Path, end_time=500.0, paper_end=2000.0):
     significant = [(r, tr) for (r, tr), zz in zip(trends, z) if zz > 2]
     worst_r, worst = max(trends, key=lambda rt: abs(rt[1]["slope"]) * (paper_end - end_time))
     reach = abs(worst["slope"]) * (paper_end - end_time)
-    text = (f"Across each steady flow's averaging window ({trends[0][1]['window']:.0f} time units, {BATCHES} batch means), "
+    text = (f"Across each steady flow's averaging window ({trends[0][1]['window']:.0f} time units, {BATCHES} batch means "
+            "of the per-block series, whose one-block profiles put h and F off the window's by a near-constant offset), "
             f"F drifts by {min(z):.1f} to {max(z):.1f} standard errors of the drift; "
             f"{len(significant)} of {len(trends)} flows drift by more than two")
     if significant:
