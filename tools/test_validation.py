@@ -25,6 +25,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import validation  # noqa: E402
 import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
+import validation_hstop_mle  # noqa: E402
 import validation_regimes  # noqa: E402
 import validation_table3  # noqa: E402
 from talus.studies import chute_fits  # noqa: E402
@@ -371,6 +372,32 @@ class Validation(unittest.TestCase):
         self.assertLess(abs(flat["slope"]), 4 * flat["slope_err"])
         [text, _] = validation_closures.trend_lines(rows, self.base)
         self.assertIn("1 of 2 flows drift by more than two (H = 10 at 24°", text)
+
+    def test_hstop_curve_from_every_case_by_maximum_likelihood(self):
+        # 60 cases at heights 4 to 36 and angles around Table 1's curve, each flowing with the
+        # probability the model gives at sigma = 0.15°: the fit's 68 % intervals hold the true A,
+        # delta1 and delta2 within twice their width, its sigma is the truth's within a factor 2,
+        # and the true curve passes the likelihood-ratio test; a curve 0.5° off does not.
+        t1 = validation.TABLE1
+        truth = {k: t1[k] for k in validation_hstop_mle.NAMES}
+        rows = []
+        for k in range(60):
+            h = 4 + 32 * (k % 12) / 11
+            theta = float(chute_fits.theta_stop35(h, **truth)) + self.rng.uniform(-0.6, 0.6)
+            flowing = theta - float(chute_fits.theta_stop35(h, **truth)) > self.rng.normal(0, 0.15)
+            rows.append({"h": h, "angle": theta, "arrested": 0 if flowing else 1})
+        fitted = validation_hstop_mle.fit(chute_fits, validation_hstop_mle.cases_of(rows))
+        for name in validation_hstop_mle.NAMES:
+            lo, hi = fitted["interval"][name]
+            self.assertLess(abs(fitted["params"][name] - truth[name]), 2 * (hi - lo), name)
+            self.assertLess(lo, fitted["params"][name])
+            self.assertGreater(hi, fitted["params"][name])
+        self.assertLess(abs(math.log(fitted["sigma"] / 0.15)), math.log(2))
+        _, _, p_true = validation_hstop_mle.against_paper(chute_fits, validation_hstop_mle.cases_of(rows), fitted, truth)
+        self.assertGreater(p_true, 0.01)
+        off = dict(truth, delta1=truth["delta1"] + 0.5, delta2=truth["delta2"] + 0.5)
+        _, _, p_off = validation_hstop_mle.against_paper(chute_fits, validation_hstop_mle.cases_of(rows), fitted, off)
+        self.assertLess(p_off, 0.01)
 
     def test_heights_run_ahead_of_the_staircase_form_their_own_group(self):
         self.assertEqual(validation.height_groups([4, 6, 8, 40, 12.0, 10, 8]), [[4, 6, 8, 10, 12.0], [40]])

@@ -30,6 +30,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
+import validation_hstop_mle  # noqa: E402
 import validation_regimes  # noqa: E402
 import validation_sensitivity  # noqa: E402
 import validation_table3  # noqa: E402
@@ -1044,6 +1045,20 @@ def weinhart_report(lines, figures, base=VALIDATION):
             for name in ("beta", "gamma"):
                 table[name + "_with_paper_A"] = float(fixed["flow_rule"]["params"][name])
                 table[name + "_with_paper_A_err"] = float(fixed["flow_rule"]["se"][name])
+    mle_lines, mle = validation_hstop_mle.lines(chute_fits, staircase, {k: TABLE1[k] for k in validation_hstop_mle.NAMES},
+                                                TABLE1_BAR)
+    if mle:
+        for name in validation_hstop_mle.NAMES:
+            table[name + "_mle"] = mle["params"][name]
+            table[name + "_mle_err"] = validation_hstop_mle.half_width(mle["interval"][name])
+            table[name + "_mle_lo"], table[name + "_mle_hi"] = mle["interval"][name]
+        table["sigma_mle"] = mle["sigma"]
+        flows = validation_closures.steady(flowmap)
+        if len(flows) >= 3:  # the flow rule through that curve, as through Talus' own and the paper's
+            p, pse, _ = chute_fits.fit_flow_rule([r["h"] for r in flows], [r["angle"] for r in flows],
+                                                 [r["froude"] for r in flows], mle["params"])
+            for name in ("beta", "gamma"):
+                table[name + "_mle"], table[name + "_mle_err"] = float(p[name]), float(pse[name])
     out.mkdir(parents=True, exist_ok=True)
     (out / "table1.json").write_text(json.dumps(table, indent=1) + "\n")
 
@@ -1074,6 +1089,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
                      f"{fmt(q['delta2'], e['delta2'])} | {block.get('err_deg', block.get('err')):.2g} |")
     lines += consistency_lines(chute_fits, intervals, hs)
     lines += fixed_a_lines(fixed)
+    lines += mle_lines
     if not determined(hs):
         top = max((r["h"] for r in intervals if r["kind"] == "angle"), default=0.0)
         lines += ["", f"The Eq. 35 fit is not determined yet: heights up to h = {top:.0f} d do not reach the curve's "
@@ -1085,14 +1101,22 @@ def weinhart_report(lines, figures, base=VALIDATION):
     if map_figure:
         lines += [f"![flow rule and closures]({map_figure.relative_to(base)})", ""]
         figures.append(map_figure)
-    lines += ["Table 1 (beta and gamma with Talus' own h_stop fit; the last column holds A at Table 1's value, "
-              "see above):", "",
-              "| quantity | Talus | Weinhart et al. 2012, Table 1 | difference | within the bar | Talus, A = 3.355 |",
-              "|---|---|---|---|---|---|"]
+    lines += ["Table 1 (beta and gamma with Talus' own h_stop fit; the last two columns hold A at Table 1's value "
+              "and fit every case at once, with beta and gamma through each of those curves; see above):", "",
+              "| quantity | Talus | Weinhart et al. 2012, Table 1 | difference | within the bar | Talus, A = 3.355 | "
+              "Talus, every case (68 %) |",
+              "|---|---|---|---|---|---|---|"]
     for name, paper in TABLE1.items():
         v, e = table[name], table[name + "_err"]
+        mle_v = table.get(name + "_mle")
+        if mle_v is None:
+            mle_text = ""
+        elif name + "_mle_lo" in table:
+            mle_text = f"{mle_v:.4g} ({table[name + '_mle_lo']:.4g} to {table[name + '_mle_hi']:.4g})"
+        else:
+            mle_text = fmt(mle_v, table[name + "_mle_err"], 4)
         if v is None:
-            lines.append(f"| {name} | not yet fitted | {paper} | | | |")
+            lines.append(f"| {name} | not yet fitted | {paper} | | | | {mle_text} |")
             continue
         bar = TABLE1_BAR[name]
         if bar is None:
@@ -1104,7 +1128,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
         held = table.get(name + "_with_paper_A")
         held_text = (f"{fmt(held, table[name + '_with_paper_A_err'], 4)}" if held is not None
                      else ("(held)" if name == "A" and "delta1_with_paper_A" in table else ""))
-        lines.append(f"| {name} | {v:.4g} ± {e:.2g} | {paper} | {v - paper:+.3g} | {verdict} | {held_text} |")
+        lines.append(f"| {name} | {v:.4g} ± {e:.2g} | {paper} | {v - paper:+.3g} | {verdict} | {held_text} | {mle_text} |")
     lines.append("")
 
 
