@@ -16,10 +16,14 @@ Vec3 corner(const Box& box, std::uint32_t id, const Pose& pose) {
   return pose.to_parent({id & 1u ? h.x : -h.x, id & 2u ? h.y : -h.y, id & 4u ? h.z : -h.z});
 }
 
-Vec3 corner(const OrientedBox& box, std::uint32_t id) {
-  return box.centre + box.axis[0] * (id & 1u ? box.half.x : -box.half.x) +
-         box.axis[1] * (id & 2u ? box.half.y : -box.half.y) + box.axis[2] * (id & 4u ? box.half.z : -box.half.z);
-}
+struct HalfAxes {
+  Vec3 centre, e[3];
+  explicit HalfAxes(const OrientedBox& box)
+      : centre(box.centre), e{box.axis[0] * box.half.x, box.axis[1] * box.half.y, box.axis[2] * box.half.z} {}
+  Vec3 corner(std::uint32_t id) const {
+    return centre + (id & 1u ? e[0] : -e[0]) + (id & 2u ? e[1] : -e[1]) + (id & 4u ? e[2] : -e[2]);
+  }
+};
 
 template <class IdA, class IdB>
 std::uint32_t code_of(const Simplex& s, IdA id_a, IdB id_b) {
@@ -62,9 +66,16 @@ std::uint32_t box_simplex_code(const Simplex& s) {
 }
 
 Simplex box_simplex(std::uint32_t code, const OrientedBox& a, const OrientedBox& b) {
-  Simplex s = simplex_of(
-      code, [&](std::uint32_t id) { return corner(a, id); }, [&](std::uint32_t id) { return corner(b, id); });
-  for (int k = 0; k < s.size; ++k) s.p[k].corners = code >> (kCountBits + kPairBits * k) & 63u;
+  // Each box's half-axes once: a corner is then its centre plus or minus each, the very sums
+  // (and bits) of corner(), since a product's sign follows the factor's.
+  const HalfAxes ea(a), eb(b);
+  Simplex s;
+  const int size = static_cast<int>(code & ((1u << kCountBits) - 1));
+  for (int k = 0; k < size && k < 4; ++k) {
+    const std::uint32_t pair = code >> (kCountBits + kPairBits * k) & 63u;
+    const Vec3 pa = ea.corner(pair & 7u), pb = eb.corner(pair >> 3);
+    s.push({pa - pb, pa, pb, pair});
+  }
   return s;
 }
 
