@@ -963,7 +963,7 @@ def preparation_lines(chute_fits, out, staircase):
     return lines
 
 
-def plot_hstop(chute_fits, rows, fits, out):
+def plot_hstop(chute_fits, rows, fits, out, mle=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -974,7 +974,7 @@ def plot_hstop(chute_fits, rows, fits, out):
         pts = [(r["angle"], r["h"]) for r in rows if bool(r["arrested"]) == bool(arrested) and r["h"] != ""]
         if pts:
             ax.errorbar(*zip(*pts), label=label, **style)
-    theta = np.linspace(20.0, 30.0, 200)
+    theta = np.linspace(19.0, 30.0, 200)
     p = TABLE1
     ax.plot(theta, chute_fits.hstop35(theta, p["A"], p["delta1"], p["delta2"]), "b-", lw=1,
             label="Eq. 35, Weinhart et al. 2012 Table 1")
@@ -985,9 +985,14 @@ def plot_hstop(chute_fits, rows, fits, out):
             with np.errstate(invalid="ignore", divide="ignore"):  # below delta1 the curve has no height
                 ax.plot(theta, f(theta, q["A"], q["delta1"], q["delta2"]), style, lw=1,
                     label=f"Talus, fit of Eq. {key[-2:]} (cases so far)")
-    ax.set(xlabel="theta (deg)", ylabel="h (d)", ylim=(0, 42), xlim=(20, 30),
+    if mle:
+        q = mle["params"]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ax.plot(theta, chute_fits.hstop35(theta, q["A"], q["delta1"], q["delta2"]), "-.", color="tab:orange", lw=1,
+                    label="Talus, Eq. 35 from every case (maximum likelihood)")
+    ax.set(xlabel="theta (deg)", ylabel="h (d)", ylim=(0, 42), xlim=(19, 30),
            title="h_stop, lambda = 1 (Weinhart et al. 2012, Fig. 6)")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="center right")
     fig.tight_layout()
     path = out / "hstop_lambda1.png"
     fig.savefig(path, dpi=110)
@@ -1095,7 +1100,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
         lines += ["", f"The Eq. 35 fit is not determined yet: heights up to h = {top:.0f} d do not reach the curve's "
                   "asymptote delta1 (h -> infinity), so A, delta1 and delta2 trade off against each other. "
                   "Table 1 below and table1.json stay empty until the staircase reaches its thick layers."]
-    lines += ["", f"![h_stop]({plot_hstop(chute_fits, staircase, fits, out).relative_to(base)})", ""]
+    lines += ["", f"![h_stop]({plot_hstop(chute_fits, staircase, fits, out, mle).relative_to(base)})", ""]
     figures.append(out / "hstop_lambda1.png")
     lines += map_lines
     if map_figure:
