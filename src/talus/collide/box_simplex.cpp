@@ -25,38 +25,26 @@ struct HalfAxes {
   }
 };
 
-template <class IdA, class IdB>
-std::uint32_t code_of(const Simplex& s, IdA id_a, IdB id_b) {
+}  // namespace
+
+std::uint32_t box_simplex_code(const Simplex& s, const Pose& pose_a, const Pose& pose_b) {
   std::uint32_t code = static_cast<std::uint32_t>(s.size);
   for (int k = 0; k < s.size; ++k) {
-    const std::uint32_t pair = id_a(s.p[k].a) | id_b(s.p[k].b) << 3;
+    const std::uint32_t pair = corner_id(s.p[k].a, pose_a) | corner_id(s.p[k].b, pose_b) << 3;
     code |= pair << (kCountBits + kPairBits * k);
   }
   return code;
 }
 
-template <class CornerA, class CornerB>
-Simplex simplex_of(std::uint32_t code, CornerA corner_a, CornerB corner_b) {
+Simplex box_simplex(std::uint32_t code, const Box& a, const Pose& pose_a, const Box& b, const Pose& pose_b) {
   Simplex s;
   const int size = static_cast<int>(code & ((1u << kCountBits) - 1));
   for (int k = 0; k < size && k < 4; ++k) {
     const std::uint32_t pair = code >> (kCountBits + kPairBits * k);
-    const Vec3 pa = corner_a(pair & 7u), pb = corner_b(pair >> 3 & 7u);
+    const Vec3 pa = corner(a, pair & 7u, pose_a), pb = corner(b, pair >> 3 & 7u, pose_b);
     s.push({pa - pb, pa, pb});
   }
   return s;
-}
-
-}  // namespace
-
-std::uint32_t box_simplex_code(const Simplex& s, const Pose& pose_a, const Pose& pose_b) {
-  return code_of(
-      s, [&](const Vec3& x) { return corner_id(x, pose_a); }, [&](const Vec3& x) { return corner_id(x, pose_b); });
-}
-
-Simplex box_simplex(std::uint32_t code, const Box& a, const Pose& pose_a, const Box& b, const Pose& pose_b) {
-  return simplex_of(
-      code, [&](std::uint32_t id) { return corner(a, id, pose_a); }, [&](std::uint32_t id) { return corner(b, id, pose_b); });
 }
 
 std::uint32_t box_simplex_code(const Simplex& s) {
