@@ -68,11 +68,11 @@ TEST(BodyInsertion, CrossesNeverTouchAndStayInTheRegion) {
   EXPECT_GT(near_pairs, placed.size());
 }
 
-// Lajeunesse et al. 2005 (channel) fit (L_inf - L0)/L0 = 1.2 a for a < 3; Lube et al. 2005 and
-// Balmforth & Kerswell 2005 report prefactors up to about 1.6-1.9 for a below 2. A column of
-// 400 beads, 6 beads wide, has a ragged front of about one bead (0.13 L0): the band [1.0, 2.0] a
-// covers the published scatter and that resolution, and fails for a column that does not flow
-// or one that spreads like a frictionless fluid.
+// Channel experiments fit (L_inf - L0)/L0 = 1.2 a (Lube et al. 2005, a < 1.8) to 1.8 a
+// (Lajeunesse et al. 2005, a < 3), as collected by Lagrée, Staron & Popinet 2011, Eq. (3.1).
+// A column of 400 beads, 6 beads wide, has a ragged front of about one bead (0.13 L0): the band
+// [1.0, 2.0] a covers the published scatter and that resolution, and fails for a column that
+// does not flow or one that spreads like a frictionless fluid.
 TEST(DamBreak, SphereColumnRunsOutWithinPublishedScatter) {
   const nlohmann::json s = run_example("examples/dam_break_spheres.toml", {"run.vtk_interval=0"}, "dam_break_spheres");
   ASSERT_EQ(s["stop_reason"], "collapse_over");

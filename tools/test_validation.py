@@ -135,6 +135,26 @@ class Validation(unittest.TestCase):
         self.assertIn("4.0 standard errors", line)
         self.assertIn("not consistent", line)
 
+    def test_spheres_against_both_channel_experiments(self):
+        lube, lajeunesse = validation.channel_fits()
+        self.assertEqual((lube.source, lajeunesse.source), ("Lube et al. 2005", "Lajeunesse et al. 2005"))
+        # Each fit on its own range only: Lube's says nothing between a = 1.8 and 2.8.
+        self.assertAlmostEqual(lube.runout_ratio(1.0), 1.2)
+        self.assertIsNone(lube.runout_ratio(2.3))
+        self.assertAlmostEqual(lube.runout_ratio(8.0), 1.9 * 4.0)
+        self.assertAlmostEqual(lajeunesse.runout_ratio(1.0), 1.8)
+        self.assertAlmostEqual(lajeunesse.runout_ratio(8.0), 2.3 * 4.0)
+        spheres = [{"family": "spheres", "aspect_ratio": 1.0, "runout_ratio": 1.5, "runout_ratio_err": 0.05},
+                   {"family": "spheres", "aspect_ratio": 2.3, "runout_ratio": 4.54, "runout_ratio_err": 0.1},
+                   {"family": "spheres", "aspect_ratio": 8.0, "runout_ratio": 7.0, "runout_ratio_err": 0.1},
+                   {"family": "crosses", "aspect_ratio": 1.0, "runout_ratio": 0.2, "runout_ratio_err": 0.1}]
+        line = validation.spheres_against_channel_experiments(spheres)[0]
+        self.assertIn("a = 1.00: 1.5 (between the two)", line)
+        self.assertIn("a = 2.30: 4.54 (4.0 standard errors above Lajeunesse et al. 2005)", line)  # 1.8 x 2.3 = 4.14
+        self.assertIn("a = 8.00: 7 (6.0 standard errors below Lube et al. 2005)", line)  # 1.9 x 4 = 7.6
+        self.assertNotIn("0.2", line)  # crosses are not compared with the spheres' fits
+        self.assertEqual(validation.spheres_against_channel_experiments(spheres[3:]), [])
+
     def test_staircase_rows_include_kept_cases_missing_from_its_table(self):
         # The staircase's table lists the cases of the run that wrote it; the report also reads
         # the finished cases kept since, and leaves out an interrupted one.

@@ -39,18 +39,24 @@ ROOT = Path(__file__).resolve().parent.parent
 VALIDATION = ROOT / "validation"
 
 
-def fits_module():
-    """talus.studies.chute_fits; without a built package, the source file itself (it needs only
-    numpy and scipy), so that the report regenerates on a checkout that was never built."""
+def study_module(name):
+    """talus.studies.<name>; without a built package, the source file itself (chute_fits needs
+    only numpy and scipy, channel_runout_fits nothing), so that the report regenerates on a
+    checkout that was never built."""
+    import importlib
     try:
-        from talus.studies import chute_fits
+        return importlib.import_module("talus.studies." + name)
     except ImportError:
         import importlib.util
-        spec = importlib.util.spec_from_file_location(
-            "chute_fits", ROOT / "python" / "talus" / "studies" / "chute_fits.py")
-        chute_fits = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(chute_fits)
-    return chute_fits
+        spec = importlib.util.spec_from_file_location(name, ROOT / "python" / "talus" / "studies" / (name + ".py"))
+        module = importlib.util.module_from_spec(spec)
+        sys.modules[spec.name] = module  # a dataclass looks its module up there
+        spec.loader.exec_module(module)
+        return module
+
+
+def fits_module():
+    return study_module("chute_fits")
 
 
 def run_study_command(args, command, *options):
@@ -322,9 +328,9 @@ def mean_err(xs):
     return m, sd / math.sqrt(n)
 
 
-def lajeunesse_runout(a):
-    """Lajeunesse et al. 2005 (quoted by Huet et al. 2021, Fig. 10): (L_inf - L0)/L0 for spheres."""
-    return 1.2 * a if a < 3 else 1.9 * a ** (2.0 / 3.0)
+def channel_fits():
+    """The channel experiments of Huet et al. 2021, Fig. 10 (channel_runout_fits.py)."""
+    return study_module("channel_runout_fits").CHANNEL_RUNOUT_FITS
 
 
 def power_fit(points):
@@ -348,6 +354,32 @@ def power_fit(points):
 
 TABLE3_REGIONS = ["whole", "near_gate", "near_gate_top"]  # whole space, half close to the gate, quarter at its top
 TABLE3_ROWS = ["coordination_points", "ground_contacts", "side_wall_contacts", "gate_contacts"]
+
+
+def spheres_against_channel_experiments(cases):
+    """Where each sphere point lies against the published channel fits that hold at its a: inside
+    their envelope, or how many of its standard errors outside."""
+    fits = channel_fits()
+    words = []
+    for c in sorted((c for c in cases if c["family"] == "spheres"), key=lambda c: c["aspect_ratio"]):
+        a, y, err = c["aspect_ratio"], c["runout_ratio"], c["runout_ratio_err"]
+        values = {f.source: f.runout_ratio(a) for f in fits}
+        held = [v for v in values.values() if v is not None]
+        if not held:
+            words.append(f"a = {a:.2f}: no fit holds")
+            continue
+        low, high = min(held), max(held)
+        if low <= y <= high and len(held) > 1:
+            where = "between the two"
+        else:
+            nearest = low if abs(y - low) <= abs(y - high) else high
+            off = (y - nearest) / err if err and math.isfinite(err) and err > 0 else float("inf")
+            source = next(k for k, v in values.items() if v == nearest)
+            where = f"{abs(off):.1f} standard errors {'above' if y > nearest else 'below'} {source}"
+        words.append(f"a = {a:.2f}: {y:.3g} ({where})")
+    if not words:
+        return []
+    return [f"The spheres against the channel experiments, point by point: {'; '.join(words)}."]
 
 
 def runout_verdict(fits):
@@ -465,18 +497,22 @@ def huet_report(lines, figures, base=VALIDATION):
     (out / "runout.json").write_text(json.dumps(runout, indent=1) + "\n")
     lines += ["## Huet et al. 2021: dam-break collapses of the small systems", "",
               "Each row is one gate position L0 with its realisations (mean ± standard error). "
-              "Runout ratio (L_inf - L0)/L0 and height ratio H0/H_inf as in Sec. III C; the sphere "
-              "fit is Lajeunesse et al. 2005 (1.2 a for a < 3, 1.9 a^(2/3) above), as the paper's Fig. 10. "
+              "Runout ratio (L_inf - L0)/L0 and height ratio H0/H_inf as in Sec. III C. The spheres' "
+              "published fits are the two channel experiments of the paper's Fig. 10 and its Sec. I, as "
+              "collected by Lagrée, Staron & Popinet 2011, Eq. (3.1): " + "; ".join(
+                  f"{f.source} ({f.material}), {f.linear:g} a for a < {f.a_low:g} and {f.power:g} a^(2/3) for "
+                  f"a > {f.a_high:g}" for f in channel_fits()) + ". "
               "The family `crosses` is the paper's simulation (Sec. III C): one contact point per pair of convex "
               "parts (crust and GJK, `contact.manifold = false`) and the gate removed at t = 0. The `crosses_manifold` "
               "families give each face or edge contact up to four points (k/n each) and pull the gate at 43 m/s^2 "
               "with its friction, as the paper does for its Figs. 6-7 only; the 12,000-cross column ran so too.", "",
-              "| particles | family | L0 (m) | runs | a = H0/L0 | (L_inf - L0)/L0 | spheres' fit | H0/H_inf | regime |",
+              "| particles | family | L0 (m) | runs | a = H0/L0 | (L_inf - L0)/L0 | " + " ; ".join(f.source for f in channel_fits()) + " | H0/H_inf | regime |",
               "|---|---|---|---|---|---|---|---|---|"]
     for c in cases:
-        fit = lajeunesse_runout(c["aspect_ratio"]) if c["particles"] == "spheres" else None
+        published = [f.runout_ratio(c["aspect_ratio"]) for f in channel_fits()] if c["particles"] == "spheres" else []
+        published = " ; ".join("-" if v is None else fmt(v, None) for v in published)
         lines.append(f"| {c['particles']} | {c['family']} | {c['L0']:.3g} | {c['runs']} | {fmt(c['aspect_ratio'], c['aspect_ratio_err'])} | "
-                     f"{fmt(c['runout_ratio'], c['runout_ratio_err'])} | {fmt(fit, None) if fit else ''} | "
+                     f"{fmt(c['runout_ratio'], c['runout_ratio_err'])} | {published} | "
                      f"{fmt(c['height_ratio'], c['height_ratio_err'])} | {c['regime']} {c['regimes']} |")
     lines.append("")
     fits = {}
@@ -487,7 +523,7 @@ def huet_report(lines, figures, base=VALIDATION):
             fits[fam] = fit
             lines.append(f"Power law (L_inf - L0)/L0 = K a^n over the {fam}: K = {fit[0]:.3g} ± {fit[2]:.2g}, "
                          f"n = {fit[1]:.3g} ± {fit[3]:.2g} ({len(pts)} aspect ratios).")
-    lines += runout_verdict(fits)
+    lines += runout_verdict(fits) + spheres_against_channel_experiments(cases)
     runs = family_summaries(base)
     lines += [""] + validation_regimes.lines(runs, {f.name: f.sets for f in FAMILIES})
     com_lines, com_fits = validation_centre_of_mass.lines_and_fits(runs)
@@ -754,7 +790,11 @@ def plot_huet(cases, out):
             ax.errorbar(a, [c[key] for c in cs], yerr=[c[key + "_err"] if math.isfinite(c[key + "_err"]) else 0 for c in cs],
                         fmt=marker, color=colour, label=fam, capsize=3)
     grid = [0.5 + 0.05 * k for k in range(200)]
-    axes[0].plot(grid, [lajeunesse_runout(a) for a in grid], "b--", lw=1, label="Lajeunesse et al. 2005")
+    for fit, colour in zip(channel_fits(), ("b", "tab:cyan")):
+        for branch, style in (("linear", "--"), ("power", ":")):
+            part = [(a, fit.runout_ratio(a)) for a in grid if (a <= fit.a_low) == (branch == "linear")]
+            part = [(a, v) for a, v in part if v is not None]
+            axes[0].plot([a for a, _ in part], [v for _, v in part], style, color=colour, lw=1, label=fit.label(branch))
     axes[0].set(xscale="log", yscale="log", xlabel="a = H0/L0", ylabel="(L_inf - L0)/L0", title="Huet et al. 2021, Fig. 10")
     axes[1].set(xlabel="a = H0/L0", ylabel="H0/H_inf", title="Huet et al. 2021, Fig. 11")
     for ax in axes:

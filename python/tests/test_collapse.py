@@ -19,8 +19,9 @@ def collapse():
 
 
 def test_the_column_collapses_as_channel_experiments_do(collapse):
-    """Lajeunesse et al. 2005 (channel, a < 3): (L_inf - L0) / L0 = 1.2 a. Beads with rolling
-    resistance and these soft, damped contacts run out 1.5 a; the test allows 0.8 a to 2 a."""
+    """Channel experiments: (L_inf - L0) / L0 = 1.2 a (Lube et al. 2005, a < 1.8) to 1.8 a
+    (Lajeunesse et al. 2005, a < 3). Beads with rolling resistance and these soft, damped
+    contacts run out 1.5 a; the test allows 0.8 a to 2 a."""
     sim, initial, final = collapse
     assert initial.mean_speeds()["translational"] < 1e-3 and final.mean_speeds()["translational"] < 1e-6
     m = talus.measure_collapse(initial, final, initial_length=L0, box_length=LENGTH, width=WIDTH, shapes_of=sim)

@@ -23,6 +23,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from . import plot_timeseries
+from .channel_runout_fits import CHANNEL_RUNOUT_FITS
 
 MARKERS = {"collapsed": ("o", "tab:blue"), "fractured": ("s", "tab:green"), "stable": ("^", "tab:orange")}
 
@@ -38,15 +39,16 @@ def save(fig, path: Path) -> None:
     print(path)
 
 
-# Lajeunesse, Monnier & Homsy, Phys. Fluids 17, 103302 (2005), quasi-2D channel with glass beads:
-# (L_inf - L0)/L0 = 1.2 a for a < 3 and 1.9 a^(2/3) for a > 3 (the two fits meet near a = 4;
-# each is drawn only on its own range). Huet et al. 2021 compare with these data in Fig. 10.
-def lajeunesse_lines(ax, a_max: float) -> None:
-    low = np.linspace(0, min(3.0, a_max), 50)
-    ax.plot(low, 1.2 * low, "k--", lw=1, label="Lajeunesse et al. 2005: 1.2 a (a < 3)")
-    if a_max > 3:
-        high = np.linspace(3.0, a_max, 50)
-        ax.plot(high, 1.9 * high ** (2 / 3), "k:", lw=1, label=r"Lajeunesse et al. 2005: 1.9 a$^{2/3}$ (a > 3)")
+# The channel experiments Huet et al. 2021 compare with in Fig. 10 (channel_runout_fits.py), each
+# branch drawn on its own range only.
+def channel_runout_lines(ax, a_max: float) -> None:
+    for fit, colour in zip(CHANNEL_RUNOUT_FITS, ("k", "tab:gray")):
+        low = np.linspace(0, min(fit.a_low, a_max), 50)
+        ax.plot(low, fit.linear * low, "--", color=colour, lw=1, label=fit.label("linear"))
+        if a_max > fit.a_high:
+            high = np.linspace(fit.a_high, a_max, 50)
+            ax.plot(high, fit.power * high ** (2 / 3), ":", color=colour, lw=1,
+                    label=fit.label("power").replace("a^(2/3)", r"a$^{2/3}$"))
 
 
 # ---------------------------------------------------------------- one dam-break run
@@ -259,7 +261,7 @@ def ensemble_figures(folder: Path) -> None:
                                                          [db["runout_ratio_high"] - db["runout_ratio"]]], fmt=m, color=c)
             right.errorbar(a, db["height_ratio"], yerr=[[db["height_ratio"] - db["height_ratio_low"]],
                                                           [db["height_ratio_high"] - db["height_ratio"]]], fmt=m, color=c)
-        lajeunesse_lines(left, max(s["aspect_ratio"] for s in flat) * 1.3)
+        channel_runout_lines(left, max(s["aspect_ratio"] for s in flat) * 1.3)
         left.set_xlabel(r"$a = H_0 / L_0$")
         left.set_ylabel(r"$(L_\infty - L_0) / L_0$")
         left.legend(fontsize=7)
@@ -302,7 +304,7 @@ def sweep_figures(folder: Path) -> None:
     a = np.array([p["aspect_ratio_mean"] for p in points])
     a_std = np.array([p["aspect_ratio_std"] for p in points])
     for key, name, ylabel, extra in [
-            ("dam_break.runout_ratio", "fig10_runout_ratio.png", r"$(L_\infty - L_0) / L_0$", lajeunesse_lines),
+            ("dam_break.runout_ratio", "fig10_runout_ratio.png", r"$(L_\infty - L_0) / L_0$", channel_runout_lines),
             ("dam_break.height_ratio", "fig11_height_ratio.png", r"$H_0 / H_\infty$", None),
             ("dam_break.com_ratio", "fig24_com_ratio.png", r"$\Delta x_{com} / x_{com,0}$", None)]:
         if f"{key}_mean" not in points[0]:
