@@ -392,6 +392,17 @@ class Validation(unittest.TestCase):
         self.assertLess(abs(flat["slope"]), 4 * flat["slope_err"])
         [text, _] = validation_closures.trend_lines(rows, self.base)
         self.assertIn("1 of 2 flows drift by more than two (H = 10 at 24°", text)
+        self.assertIn("not yet steady in the paper's sense", text)
+        # Run on to t = 2000, the drifting flow either settled (a change within two combined
+        # errors) or kept changing; the report says which, beside what its drift foretold.
+        check = {"H": 10, "angle": 24, "F_short": 0.5, "F_long": 0.505, "sigmas": 0.8}
+        [text, _] = validation_closures.trend_lines(rows, self.base, [check])
+        self.assertRegex(text, r"H = 10 at 24°, whose drift foretold \+0\.[3-6]\d\d,")  # 3e-4 x 1500 = 0.45
+        self.assertIn("moved by +0.005 (0.8 combined standard errors)", text)
+        self.assertIn("a fluctuation, not a trend", text)
+        self.assertNotIn("not yet steady in the paper's sense", text)
+        [text, _] = validation_closures.trend_lines(rows, self.base, [dict(check, F_long=0.9, sigmas=40.0)])
+        self.assertIn("still changing at t = 500", text)
 
     def test_hstop_curve_from_every_case_by_maximum_likelihood(self):
         # 60 cases at heights 4 to 36 and angles around Table 1's curve, each flowing with the

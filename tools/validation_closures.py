@@ -85,12 +85,13 @@ def window_trend(folder: Path):
             "F": float(F.mean())}
 
 
-def trend_lines(rows, base: Path, end_time=500.0, paper_end=2000.0):
+def trend_lines(rows, base: Path, checks=(), end_time=500.0, paper_end=2000.0):
     """Whether the steady flows still drift within their averaging window: each one's change of F
     across the window in its standard errors, and the change a drift that size would make by the
     paper's end time, against the flow rule's scatter (Table 1's err(F)). Evidence that the runs
     had settled, not a substitute for running them longer: a drift slower than the window shows
-    escapes it."""
+    escapes it. Where a drifting flow was run on to t = 2000 (`checks`, length_check), what it
+    did is said beside what its drift foretold."""
     trends = []
     for r in rows:
         tr = window_trend(case_folder(base, "flowmap", r))
@@ -111,9 +112,24 @@ def trend_lines(rows, base: Path, end_time=500.0, paper_end=2000.0):
                                  for r, tr in significant) + ")"
     text += (f". The largest drift, carried on to t = {paper_end:g}, would move F by {reach:.3f} "
              f"(H = {worst_r['H']:g} at {worst_r['angle']:g}°), against the flow rule's scatter err(F) = {PAPER_ERR['F']}")
-    text += (": flows still drifting at t = 500 are not yet steady in the paper's sense (F constant over its last 200 "
-             "time units), and their F at t = 500 is a lower or upper bound, not the steady value." if significant
-             else ": within their errors the flows had settled by the start of the window.")
+    ran_on = {(c["H"], c["angle"]): c for c in checks}
+    tested = [(r, tr, ran_on[(r["H"], r["angle"])]) for r, tr in significant if (r["H"], r["angle"]) in ran_on]
+    if tested:
+        text += ". Run on to t = %g: " % paper_end + "; ".join(
+            f"H = {r['H']:g} at {r['angle']:g}°, whose drift foretold {tr['slope'] * (paper_end - end_time):+.3f}, "
+            f"moved by {c['F_long'] - c['F_short']:+.3f} ({c['sigmas']:.1f} combined standard errors)"
+            for r, tr, c in tested)
+        settled = all(c["sigmas"] < 2 for _, _, c in tested)
+        text += (": the drift within the window was a fluctuation, not a trend, and t = 500 was long enough for "
+                 "that flow." if settled else ": the flow was still changing at t = 500.")
+        untested = [(r, tr) for r, tr in significant if (r["H"], r["angle"]) not in ran_on]
+        if untested:
+            text += " Not yet run on: " + ", ".join(f"H = {r['H']:g} at {r['angle']:g}°" for r, _ in untested) + "."
+    elif significant:
+        text += (": flows still drifting at t = 500 are not yet steady in the paper's sense (F constant over its last "
+                 "200 time units), and their F at t = 500 is a lower or upper bound, not the steady value.")
+    else:
+        text += ": within their errors the flows had settled by the start of the window."
     return [text, ""]
 
 
@@ -302,7 +318,7 @@ def section(chute_fits, flowmap, long_rows, hs_talus, talus_determined, paper_hs
         lines.append("")
     else:
         lines += ["None has finished yet: until one has, the shorter runs are not shown to be long enough.", ""]
-    lines += trend_lines(rows, base)
+    lines += trend_lines(rows, base, checks)
     figure = plot(chute_fits, flowmap, fits, paper_hstop, base / "weinhart2012", steady(near_stop)) if rows else None
     return lines, fits, figure
 
