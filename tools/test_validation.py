@@ -155,6 +155,20 @@ class Validation(unittest.TestCase):
         self.assertNotIn("0.2", line)  # crosses are not compared with the spheres' fits
         self.assertEqual(validation.spheres_against_channel_experiments(spheres[3:]), [])
 
+    def test_power_law_without_the_columns_that_stood(self):
+        # Four collapsing columns on 1.1 a^1.0 and one that mostly stood (runout 0.2 at a = 1):
+        # the fit over all five is steep, the one without the standing column gives n = 1 back.
+        cases = [{"family": "crosses", "aspect_ratio": a, "runout_ratio": 1.1 * a * (1 + e), "regime": "collapsed"}
+                 for a, e in ((1.7, 0.02), (2.9, -0.03), (4.6, 0.01), (6.1, -0.01))]
+        cases.append({"family": "crosses", "aspect_ratio": 1.0, "runout_ratio": 0.2, "regime": "intermittent"})
+        self.assertGreater(validation.power_fit([(c["aspect_ratio"], c["runout_ratio"]) for c in cases])[1], 1.5)
+        [line] = validation.moving_columns_fit_lines(cases)
+        self.assertIn("stood (a = 1.00), the crosses give K = 1.1", line)
+        n = float(line.split(" and n = ")[1].split(" ")[0])
+        self.assertLess(abs(n - 1), 0.05)  # the points lie within 3 % of 1.1 a
+        # Every column moved: nothing to say beyond the fit over all of them.
+        self.assertEqual(validation.moving_columns_fit_lines(cases[:4]), [])
+
     def test_staircase_rows_include_kept_cases_missing_from_its_table(self):
         # The staircase's table lists the cases of the run that wrote it; the report also reads
         # the finished cases kept since, and leaves out an interrupted one.
