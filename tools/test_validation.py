@@ -374,7 +374,11 @@ class Validation(unittest.TestCase):
         spread = validation_closures.rule_deviation(chute_fits, validation_closures.steady(runs), hs)
         self.assertGreater(spread, 0.0124)
         self.assertLess(spread, 0.0292)
-        self.assertTrue(any("scatter about Table 1's rule no more than" in line for line in lines))
+        # 0.02 against the paper's 0.121: far less, beyond the 18 % sampling error of an rms of 16.
+        self.assertTrue(any("scatter about Table 1's rule less than the paper's do" in line for line in lines))
+        self.assertIn("as much as the paper's do (1.01 times, within twice the 27% sampling error of an rms over 7 "
+                      "flows)", validation_closures.spread_verdict(0.122, 0.121, 7))
+        self.assertIn("more than the paper's do (1.60 times", validation_closures.spread_verdict(0.1936, 0.121, 7))
         close = validation_closures.closures(chute_fits, validation_closures.steady(runs), hs)
         self.assertLess(close["K"]["paper_err"], 0.01)
         self.assertLess(close["bulk_volume_fraction"]["paper_err"], 0.002)

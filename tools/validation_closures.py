@@ -205,6 +205,20 @@ def rule_deviation(chute_fits, rows, paper_hstop):
                                           - rule["gamma"]) for r in rows])
 
 
+def spread_verdict(spread, paper_spread, n):
+    """Talus' rms deviation about the paper's rule against the paper's own, read with the sampling
+    error of an rms over n flows (relative 1 / sqrt(2 n) for Gaussian deviations)."""
+    rel = 1 / math.sqrt(2 * n)
+    ratio = spread / paper_spread
+    if ratio > 1 + 2 * rel:
+        return f"Talus' flows scatter about Table 1's rule more than the paper's do ({ratio:.2f} times, beyond twice " \
+               f"the {rel:.0%} sampling error of an rms over {n} flows)."
+    if ratio < 1 - 2 * rel:
+        return f"Talus' flows scatter about Table 1's rule less than the paper's do ({ratio:.2f} times)."
+    return f"Talus' flows scatter about Table 1's rule as much as the paper's do ({ratio:.2f} times, within twice the " \
+           f"{rel:.0%} sampling error of an rms over {n} flows)."
+
+
 def rule_ratio_lines(chute_fits, rows, paper_hstop, base: Path, fit):
     """Each steady flow's F over Table 1's flow rule at its h / h_stop: whether Talus' flows
     fall short of the paper's by a shift (gamma) or by a factor (beta). `fit`: the flow rule
@@ -226,9 +240,8 @@ def rule_ratio_lines(chute_fits, rows, paper_hstop, base: Path, fit):
     spread = rule_deviation(chute_fits, rows, paper_hstop)
     if math.isfinite(spread):
         text += (f" Their spread about the rule, err(F - F_Table1) of Eq. 49, is {spread:.3f}, against "
-                 f"{PAPER_ERR['F']} for the paper's own steady flows about it: "
-                 + ("Talus' flows scatter about Table 1's rule no more than the paper's do."
-                    if spread <= PAPER_ERR["F"] else "Talus' flows scatter about Table 1's rule more than the paper's do."))
+                 f"{PAPER_ERR['F']} for the paper's own steady flows about it. "
+                 + spread_verdict(spread, PAPER_ERR["F"], len(rows)))
     if fit:
         g, g_se, b, b_se = fit["params"]["gamma"], fit["se"]["gamma"], fit["params"]["beta"], fit["se"]["beta"]
         if g_se > 0 and b_se > 0:
