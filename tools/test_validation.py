@@ -338,6 +338,20 @@ class Validation(unittest.TestCase):
         self.assertIsNone(table["delta1"])
         self.assertTrue(any("not determined yet" in line for line in lines))
 
+    def test_run_length_effect_on_the_flow_rule(self):
+        # Eq. 47 is linear in F: every F 2.8 % higher moves beta by 2.8 % of itself, 0.0056 for
+        # beta = 0.2, inside an error of 0.016 and outside one of 0.004.
+        checks = [{"H": 10, "angle": 24, "F_short": 0.236, "F_long": 0.242, "sigmas": 0.8},
+                  {"H": 20, "angle": 24, "F_short": 0.650, "F_long": 0.6682, "sigmas": 8.7}]
+        rule = {"params": {"beta": 0.2, "gamma": 0.1}, "se": {"beta": 0.016, "gamma": 0.08}}
+        [line, _] = validation_closures.length_effect_lines(checks, rule)
+        self.assertIn("+2.8% in F (H = 20 at 24°, 8.7 of its small batch errors)", line)
+        self.assertIn("by 0.0056, within its standard error 0.016", line)
+        rule["se"]["beta"] = 0.004
+        [line, _] = validation_closures.length_effect_lines(checks, rule)
+        self.assertIn("beyond its standard error 0.004", line)
+        self.assertEqual(validation_closures.length_effect_lines([], rule), [])
+
     def test_flow_map_closures_and_run_length(self):
         # Steady flows made from the paper's closures (Table 1's flow rule and h_stop, Eqs. 52-54)
         # with noise of the size of the paper's err: fitted against the paper's h_stop curve, beta

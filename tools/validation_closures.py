@@ -197,6 +197,24 @@ def length_check(flowmap, long_rows, base: Path):
     return out
 
 
+def length_effect_lines(checks, rule):
+    """What running to t = 2000 would do to the flow rule: every F scaled by the largest relative
+    change the long runs showed scales beta (and gamma) by the same factor (Eq. 47 is linear in
+    F), to set against beta's standard error. `rule`: the flow rule with Table 1's h_stop."""
+    moved = [c for c in checks if c["F_short"] > 0]
+    if not moved or not rule:
+        return []
+    worst = max(moved, key=lambda c: abs(c["F_long"] / c["F_short"] - 1))
+    rel = worst["F_long"] / worst["F_short"] - 1
+    beta, beta_se = rule["params"]["beta"], rule["se"]["beta"]
+    shift = abs(beta * rel)
+    verdict = (f"within its standard error {beta_se:.3f}: t = 500 is long enough for the flow rule"
+               if shift <= beta_se else f"beyond its standard error {beta_se:.3f}: the flow rule needs the longer runs")
+    return [f"The largest change from t = 500 to 2000 is {rel:+.1%} in F (H = {worst['H']:g} at {worst['angle']:g}°, "
+            f"{worst['sigmas']:.1f} of its small batch errors). Every flow's F changed by that much would move beta "
+            f"(Table 1's h_stop) by {shift:.4f}, {verdict}.", ""]
+
+
 def rule_deviation(chute_fits, rows, paper_hstop):
     """err(F - F_Table1) of Eq. (49) over steady flows: their spread about Table 1's flow rule (at
     Table 1's h_stop), to set beside the paper's err(F) = 0.121 of its own flows about it."""
@@ -329,6 +347,7 @@ def section(chute_fits, flowmap, long_rows, hs_talus, talus_determined, paper_hs
                          f"{pm(c['F_long'], c['F_long_err'], 3)} | {c['h_short']:.2f} / {c['h_long']:.2f} | "
                          f"{c['sigmas']:.1f} sigma |")
         lines.append("")
+        lines += length_effect_lines(checks, fits.get("paper_hstop"))
     else:
         lines += ["None has finished yet: until one has, the shorter runs are not shown to be long enough.", ""]
     lines += trend_lines(rows, base, checks)
