@@ -1,17 +1,23 @@
-"""Whether an h_stop case's outcome belongs to the simulation or to its one realisation: the case
-of the staircase farthest on the wrong side of the paper's curve (H = 8 arrested at 23°, where
-Weinhart et al. 2012's Eq. 35 puts theta_stop at 22.74°) run again from two other random fillings
-(run.seed), and once more from the first filling with half the time step (t_c / 100, against the
-paper's t_c / 50), each to t = 500 under the arrest test of Sect. 6."""
+"""Whether an h_stop case's outcome belongs to the simulation or to its one realisation: the
+cases of the staircase farthest on the wrong side of the paper's curve run again from other
+random fillings (run.seed), and from the first filling with half the time step (t_c / 100,
+against the paper's t_c / 50), each to t = 500 under the arrest test of Sect. 6:
+- H = 8 arrested at 23°, where Weinhart et al. 2012's Eq. 35 puts theta_stop at 22.74°;
+- H = 28 arrested at 20°, 0.31° above the curve at its h = 24.8, the farthest of the thick layers.
+If halving the time step turns an arrest into a flow, the staircase's arrests are the time
+step's as much as the layer's."""
 from pathlib import Path
 
 from validation_closures import kept_rows
 
-CASE = {"H": 8, "angle": 23}
 CONTACT_TIME = 0.0049711793850625635  # examples/chute.toml: k_n = 2e5, damping rate 50, m = 1 (Eqs. 5-6)
-VARIANTS = [("hstop_seed2", "filling seed 2", ["run.seed=2"]),
-            ("hstop_seed3", "filling seed 3", ["run.seed=3"]),
-            ("hstop_dt100", "seed 1, time step t_c / 100", ["run.time_step=%r" % (CONTACT_TIME / 100)])]
+HALF_STEP = "run.time_step=%r" % (CONTACT_TIME / 100)
+# (H, angle), and per variant: its study folder (weinhart2012/<name>), label and overrides.
+CASES = [({"H": 8, "angle": 23}, [("hstop_seed2", "filling seed 2", ["run.seed=2"]),
+                                  ("hstop_seed3", "filling seed 3", ["run.seed=3"]),
+                                  ("hstop_dt100", "seed 1, time step t_c / 100", [HALF_STEP])]),
+         ({"H": 28, "angle": 20}, [("hstop_H28_dt100", "seed 1, time step t_c / 100", [HALF_STEP]),
+                                   ("hstop_H28_seed2", "filling seed 2", ["run.seed=2"])])]
 
 
 # The base's damping convention (validation/weinhart2012/chute_coefficient_damping.toml) on one steady flow of
@@ -24,22 +30,23 @@ def studies(study_class):
                        ["--lambda", "1", "--heights", str(DAMPING_CASE["H"]), "--angles", str(DAMPING_CASE["angle"]),
                         "--end-time", "500", "--average", "100"], ["sweep_runs.csv"],
                        scenario="validation/weinhart2012/chute_coefficient_damping.toml")]
-    for name, _, sets in VARIANTS:
-        options = ["--lambda", "1", "--heights", str(CASE["H"]), "--angles", str(CASE["angle"]), "--end-time", "500",
-                   "--average", "20"]
-        for s in sets:
-            options += ["--set", s]
-        out.append(study_class(name, "flowmap", options, ["sweep_runs.csv"]))
+    for case, variants in CASES:
+        for name, _, sets in variants:
+            options = ["--lambda", "1", "--heights", str(case["H"]), "--angles", str(case["angle"]), "--end-time", "500",
+                       "--average", "20"]
+            for s in sets:
+                options += ["--set", s]
+            out.append(study_class(name, "flowmap", options, ["sweep_runs.csv"]))
     return out
 
 
-def lines(chute_fits, staircase, base: Path):
-    first = [r for r in staircase if r["H"] == CASE["H"] and r["angle"] == CASE["angle"]]
+def case_lines(chute_fits, staircase, base: Path, case, variants):
+    first = [r for r in staircase if r["H"] == case["H"] and r["angle"] == case["angle"]]
     rows = [("staircase (seed 1, t_c / 50)", first[0] if first else None)]
-    for name, label, _ in VARIANTS:
+    for name, label, _ in variants:
         found = kept_rows(chute_fits, base / "weinhart2012" / name)
         rows.append((label, found[0] if found else None))
-    out = [f"**One realisation or the simulation?** H = {CASE['H']} at {CASE['angle']}° again:", "",
+    out = [f"**One realisation or the simulation?** H = {case['H']} at {case['angle']}° again:", "",
            "| run | outcome | arrest time | h (d) |", "|---|---|---|---|"]
     for label, r in rows:
         if r is None:
@@ -48,7 +55,14 @@ def lines(chute_fits, staircase, base: Path):
         arrest = r.get("arrest_time")
         arrest = f"{arrest:.0f}" if arrest not in ("", None) else ""
         out.append(f"| {label} | {r['flow_state']} | {arrest} | {r['h']:.2f} |")
-    return out + [""] + damping_lines(chute_fits, base)
+    return out + [""]
+
+
+def lines(chute_fits, staircase, base: Path):
+    out = []
+    for case, variants in CASES:
+        out += case_lines(chute_fits, staircase, base, case, variants)
+    return out + damping_lines(chute_fits, base)
 
 
 def damping_lines(chute_fits, base: Path):
