@@ -55,10 +55,6 @@ def study_module(name):
         return module
 
 
-def fits_module():
-    return study_module("chute_fits")
-
-
 def run_study_command(args, command, *options):
     """`python3 -m talus COMMAND ...` with the package beside args.talus (its build) first on the
     path, and that talus doing the runs."""
@@ -815,12 +811,11 @@ def plot_huet(cases, out):
         for ax, key in zip(axes, ["runout_ratio", "height_ratio"]):
             ax.errorbar(a, [c[key] for c in cs], yerr=[c[key + "_err"] if math.isfinite(c[key + "_err"]) else 0 for c in cs],
                         fmt=marker, color=colour, label=fam, capsize=3)
-    grid = [0.5 + 0.05 * k for k in range(200)]
     for fit, colour in zip(channel_fits(), ("b", "tab:cyan")):
         for branch, style in (("linear", "--"), ("power", ":")):
-            part = [(a, fit.runout_ratio(a)) for a in grid if (a <= fit.a_low) == (branch == "linear")]
-            part = [(a, v) for a, v in part if v is not None]
-            axes[0].plot([a for a, _ in part], [v for _, v in part], style, color=colour, lw=1, label=fit.label(branch))
+            a, y = fit.curve(branch, 10.5)  # past the widest column, a = 9.4
+            if a:
+                axes[0].plot(a, y, style, color=colour, lw=1, label=fit.label(branch))
     axes[0].set(xscale="log", yscale="log", xlabel="a = H0/L0", ylabel="(L_inf - L0)/L0", title="Huet et al. 2021, Fig. 10")
     axes[1].set(xlabel="a = H0/L0", ylabel="H0/H_inf", title="Huet et al. 2021, Fig. 11")
     for ax in axes:
@@ -1070,7 +1065,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
     """Table 1 (lambda = 1) from the committed staircase and flow map: the fits of
     talus.studies.chute_fits on the cases' tables, beside the paper's values. While the staircase
     still runs, its arrest intervals come from the cases done so far and the fits are partial."""
-    chute_fits = fits_module()
+    chute_fits = study_module("chute_fits")
     out = base / "weinhart2012"
     hstop_dir = out / "hstop"
     # The table the staircase rewrites as it goes, and its finished cases kept since.

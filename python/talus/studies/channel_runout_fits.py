@@ -28,6 +28,15 @@ class ChannelRunoutFit:
             return self.power * a ** (2.0 / 3.0)
         return None
 
+    def curve(self, branch: str, a_max: float, points: int = 50):
+        """(a, runout ratio) along one branch ("linear" or "power") on its own range up to a_max;
+        empty where the range starts beyond a_max."""
+        start, end = (0.0, min(self.a_low, a_max)) if branch == "linear" else (self.a_high, a_max)
+        if end <= start:
+            return [], []
+        a = [start + (end - start) * k / (points - 1) for k in range(points)]
+        return a, [self.linear * x if branch == "linear" else self.power * x ** (2.0 / 3.0) for x in a]
+
     def label(self, branch: str) -> str:
         if branch == "linear":
             return f"{self.source}: {self.linear:g} a (a < {self.a_low:g})"

@@ -43,12 +43,10 @@ def save(fig, path: Path) -> None:
 # branch drawn on its own range only.
 def channel_runout_lines(ax, a_max: float) -> None:
     for fit, colour in zip(CHANNEL_RUNOUT_FITS, ("k", "tab:gray")):
-        low = np.linspace(0, min(fit.a_low, a_max), 50)
-        ax.plot(low, fit.linear * low, "--", color=colour, lw=1, label=fit.label("linear"))
-        if a_max > fit.a_high:
-            high = np.linspace(fit.a_high, a_max, 50)
-            ax.plot(high, fit.power * high ** (2 / 3), ":", color=colour, lw=1,
-                    label=fit.label("power").replace("a^(2/3)", r"a$^{2/3}$"))
+        for branch, style in (("linear", "--"), ("power", ":")):
+            a, y = fit.curve(branch, a_max)
+            if a:
+                ax.plot(a, y, style, color=colour, lw=1, label=fit.label(branch).replace("a^(2/3)", r"a$^{2/3}$"))
 
 
 # ---------------------------------------------------------------- one dam-break run
