@@ -7,7 +7,8 @@ from a synthetic h_stop staircase and flow map generated from the paper's values
 al. 2012, Table 1, with noise) comes back within four standard errors and is written to
 table1.json. (The staircase's noise is kept small: the flow rule's errors are those of its own
 fit, given the fitted h_stop curve, and do not carry the curve's uncertainty.) The flow map's closures, made
-from the paper's Eqs. 52-54, come back from their fits and from its run-length check. Deterministic
+from the paper's Eqs. 52-54, come back from their fits and from its run-length check. The report's first section says which
+estimate meets which bar. Deterministic
 (fixed seed)."""
 import argparse
 import csv
@@ -27,6 +28,7 @@ import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
 import validation_hstop_mle  # noqa: E402
 import validation_regimes  # noqa: E402
+import validation_summary  # noqa: E402
 import validation_table3  # noqa: E402
 from talus.studies import chute_fits  # noqa: E402
 
@@ -168,6 +170,35 @@ class Validation(unittest.TestCase):
         self.assertLess(abs(n - 1), 0.05)  # the points lie within 3 % of 1.1 a
         # Every column moved: nothing to say beyond the fit over all of them.
         self.assertEqual(validation.moving_columns_fit_lines(cases[:4]), [])
+
+    def test_summary_says_which_estimates_meet_the_bars(self):
+        # delta1 0.2 deg off (meets 0.5 deg), delta2 1.7 deg off (misses), A 24 % off (misses 10 %);
+        # the flow rule through Table 1's curve 2 % off (meets), through the fitted one 16 % (misses).
+        table = {"delta1": 17.44, "delta1_err": 0.42, "delta2": 31.06, "delta2_err": 1.4, "A": 4.17, "A_err": 1.2,
+                 "A_mle": 4.17, "A_mle_lo": 3.25, "A_mle_hi": 5.56, "beta": 0.165, "beta_err": 0.02,
+                 "beta_with_paper_hstop": 0.1996, "beta_with_paper_hstop_err": 0.015, "gamma": 0.1, "gamma_err": 0.1,
+                 "staircase_complete": False, "staircase_max_H": 28.0, "flow_map_cases": 10}
+        cases = [{"family": "spheres", "aspect_ratio": a, "runout_ratio": y, "runs": 3, "L0": 0.05}
+                 for a, y in ((1.0, 1.5), (8.0, 7.0))]
+        cases.append({"family": "crosses", "aspect_ratio": 2.9, "runout_ratio": 3.1, "runs": 1, "L0": 0.05})
+        fits = {"crosses": (0.35, 1.9, 0.17, 0.41)}
+        moving = {"crosses": ((1.09, 1.1, 0.15, 0.11), [0.98], 4)}
+        text = "\n".join(validation_summary.lines(table, validation.TABLE1, validation.TABLE1_BAR, cases, fits, moving,
+                                                  validation.channel_fits()))
+        row = {line.split(" | ")[0]: line for line in text.splitlines() if line.startswith("| ")}
+        self.assertIn("17.44 ± 0.42, meets the bar", row["| delta1"])
+        self.assertIn("31.06 ± 1.4, misses the bar", row["| delta2"])
+        self.assertIn("4.17 (3.25 to 5.56), misses the bar", row["| A"])
+        self.assertIn("(held)", row["| A"])
+        self.assertIn("0.1996 ± 0.015, meets the bar", row["| beta"])
+        self.assertIn("0.165 ± 0.02, misses the bar", row["| beta"])
+        self.assertNotIn("bar", row["| gamma"].split(" | ", 3)[3])  # gamma has none
+        self.assertIn("climbed to H = 28 of 40", text)
+        self.assertIn("10 of its 16 cases", text)
+        self.assertIn("Spheres: 1 of 2 aspect ratios", text)  # 7.0 at a = 8 lies below both fits (7.6, 9.2)
+        self.assertIn("n = 1.9 ± 0.41 over every aspect ratio, 2.2 standard errors", text)
+        self.assertIn("without a = 0.98, where a realisation stood, n = 1.1 ± 0.11 (consistent)", text)
+        self.assertIn("crosses at L0 = 0.05 m (1)", text)
 
     def test_staircase_rows_include_kept_cases_missing_from_its_table(self):
         # The staircase's table lists the cases of the run that wrote it; the report also reads
