@@ -28,6 +28,7 @@ import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
 import validation_hstop_mle  # noqa: E402
 import validation_regimes  # noqa: E402
+import validation_resolution  # noqa: E402
 import validation_summary  # noqa: E402
 import validation_table3  # noqa: E402
 from talus.studies import chute_fits  # noqa: E402
@@ -183,7 +184,7 @@ class Validation(unittest.TestCase):
         cases.append({"family": "crosses", "aspect_ratio": 2.9, "runout_ratio": 3.1, "runs": 1, "L0": 0.05})
         fits = {"crosses": (0.35, 1.9, 0.17, 0.41)}
         moving = {"crosses": ((1.09, 1.1, 0.15, 0.11), [0.98], 4)}
-        text = "\n".join(validation_summary.lines(table, validation.TABLE1, validation.TABLE1_BAR, cases, fits, moving,
+        text = "\n".join(validation_summary.lines(table, validation.TABLE1, validation.TABLE1_BAR, "", cases, fits, moving,
                                                   validation.channel_fits()))
         row = {line.split(" | ")[0]: line for line in text.splitlines() if line.startswith("| ")}
         self.assertIn("17.44 ± 0.42, meets the bar", row["| delta1"])
@@ -492,6 +493,39 @@ class Validation(unittest.TestCase):
         off = dict(truth, delta1=truth["delta1"] + 0.5, delta2=truth["delta2"] + 0.5)
         _, _, p_off = validation_hstop_mle.against_paper(chute_fits, validation_hstop_mle.cases_of(rows), fitted, off)
         self.assertLess(p_off, 0.01)
+
+    def test_synthetic_staircases_walk_the_search_on_the_true_curve(self):
+        # With a scatter far below the 0.5° step, a staircase drawn from Table 1's curve arrests
+        # every layer below theta_stop(h) and lets it flow above: each angle interval holds the
+        # curve, and the walk climbs from H = 4 at 21° to H = 40 by the rule of Sect. 6.
+        t1 = {k: validation.TABLE1[k] for k in validation_hstop_mle.NAMES}
+        staircase = validation.study_module("hstop_staircase").Staircase
+        rows = validation_resolution.synthetic_staircase(staircase, chute_fits, t1, 0.01, (0.87, 0.57), 40.0,
+                                                         np.random.default_rng(3))
+        self.assertEqual((rows[0]["H"], rows[0]["angle"]), (4.0, 21.0))
+        self.assertEqual(max(r["H"] for r in rows), 40.0)
+        intervals = [r for r in chute_fits.arrest_intervals(rows) if r["kind"] == "angle"]
+        self.assertGreaterEqual(len(intervals), 10)
+        for r in intervals:
+            stop = float(chute_fits.theta_stop35(r["h"], **t1))
+            self.assertLess(r["angle_lo"], stop + 0.05)
+            self.assertGreater(r["angle_hi"], stop - 0.05)
+        # The ensemble of fits brackets the truth, and a value below every synthetic fit is placed
+        # at the 0th percentile and named as outside the central 90 %.
+        saved = validation_resolution.REPLICAS
+        validation_resolution.REPLICAS = 12
+        try:
+            staircase_rows = [{"H": H, "h": 0.87 * H + 0.57} for H in (4, 10, 20, 30)]
+            text, verdict = validation_resolution.lines(
+                staircase, chute_fits, staircase_rows, t1, validation.TABLE1_BAR, 0.1,
+                {validation_resolution.INTERVALS: dict(t1), validation_resolution.LIKELIHOOD: dict(t1, delta1=10.0)},
+                0.0)
+        finally:
+            validation_resolution.REPLICAS = saved
+        rows_by = {tuple(line.split(" | ")[:2]): line for line in text if line.startswith("| ")}
+        self.assertTrue(rows_by[("| " + validation_resolution.LIKELIHOOD, "delta1")].endswith("| 10 | 0 |"))
+        self.assertIn("delta1 of the every case (max. likelihood) fit (0)", verdict)
+        self.assertIn("reaches Talus' 0.0 in 100 %", verdict)  # every statistic is at least 0
 
     def test_heights_run_ahead_of_the_staircase_form_their_own_group(self):
         self.assertEqual(validation.height_groups([4, 6, 8, 40, 12.0, 10, 8]), [[4, 6, 8, 10, 12.0], [40]])

@@ -44,10 +44,8 @@ def _minimise(f, starts):
     return best
 
 
-def fit(chute_fits, cases, start=(3.355, 17.708, 32.78)):
-    """The maximum-likelihood curve: {"params": {A, delta1, delta2}, "sigma", "nll", "interval":
-    {name: (lo, hi)}, "n", "flowing"}; None with fewer than 6 cases or no overlap of outcomes to
-    set a scale (a curve that separates every case has sigma -> 0 and no interval)."""
+def _best(chute_fits, cases, start):
+    """(the negative log-likelihood, its minimum), or None (see fit)."""
     if len(cases) < 6 or len({c[2] for c in cases}) < 2:
         return None
     f = lambda p: _nll(chute_fits, cases, *p)  # noqa: E731
@@ -55,6 +53,30 @@ def fit(chute_fits, cases, start=(3.355, 17.708, 32.78)):
     best = _minimise(f, starts)
     if math.exp(best.x[3]) < 1e-3:
         return None
+    return f, best
+
+
+def point_fit(chute_fits, cases, paper):
+    """The maximum-likelihood curve without its intervals, {"params", "sigma"} or None as fit, and
+    the likelihood-ratio statistic of against_paper. Where a range of curves separates the
+    outcomes exactly, the best likelihood is 1 (sigma -> 0) and the fit None."""
+    found = _best(chute_fits, cases, (paper["A"], paper["delta1"], paper["delta2"]))
+    f = lambda q: _nll(chute_fits, cases, paper["A"], paper["delta1"], paper["delta2"], q[0])  # noqa: E731
+    stat = 2 * (float(_minimise(f, [[-3.0], [-1.5], [0.0]]).fun) - (float(found[1].fun) if found else 0.0))
+    if found is None:
+        return None, stat
+    best = found[1]
+    return {"params": dict(zip(NAMES, map(float, best.x[:3]))), "sigma": math.exp(best.x[3])}, stat
+
+
+def fit(chute_fits, cases, start=(3.355, 17.708, 32.78)):
+    """The maximum-likelihood curve: {"params": {A, delta1, delta2}, "sigma", "nll", "interval":
+    {name: (lo, hi)}, "n", "flowing"}; None with fewer than 6 cases or no overlap of outcomes to
+    set a scale (a curve that separates every case has sigma -> 0 and no interval)."""
+    found = _best(chute_fits, cases, start)
+    if found is None:
+        return None
+    f, best = found
     interval = {}
     for k, name in enumerate(NAMES):
         interval[name] = (_bound(f, best, k, -1), _bound(f, best, k, +1))

@@ -44,7 +44,7 @@ def estimate_text(table, name, suffix, paper, bar):
     return f"{v:.4g}{spread}{mark}"
 
 
-def weinhart_lines(table, paper_values, bars):
+def weinhart_lines(table, paper_values, bars, resolution):
     out = ["**Weinhart et al. 2012, Table 1 (lambda = 1).** The bar: 0.5° on the angles, 10 % on A and beta.", "",
            "| quantity | Table 1 | bar | " + " | ".join(f"h_stop from {label}" for _, label in HSTOP_ESTIMATES) + " |",
            "|---|---|---|" + "---|" * len(HSTOP_ESTIMATES)]
@@ -59,7 +59,8 @@ def weinhart_lines(table, paper_values, bars):
         out.append(f"| {name} | {paper_values[name]:g} | {bar_text(bars[name])} | " + " | ".join(cells) + " |")
     staircase = ("complete" if table.get("staircase_complete") else
                  f"not complete (it has climbed to H = {table.get('staircase_max_H', 0):g} of 40)")
-    out += ["", f"The h_stop staircase is {staircase}; the flow map has {table.get('flow_map_cases', 0)} of its "
+    out += ["", (resolution + " " if resolution else "") +
+            f"The h_stop staircase is {staircase}; the flow map has {table.get('flow_map_cases', 0)} of its "
             f"{FLOW_MAP_CASES} cases. The sections below say where the estimates disagree and what was tested.", ""]
     return out
 
@@ -94,10 +95,11 @@ def huet_lines(cases, fits, moving_fits, channel_fits):
     return out + [""]
 
 
-def lines(table, paper_values, bars, cases, fits, moving_fits, channel_fits):
+def lines(table, paper_values, bars, resolution, cases, fits, moving_fits, channel_fits):
+    """`resolution`: what one staircase resolves of Table 1's curve, in a sentence (may be empty)."""
     out = ["## At a glance", ""]
     if table:
-        out += weinhart_lines(table, paper_values, bars)
+        out += weinhart_lines(table, paper_values, bars, resolution)
     if cases:
         out += huet_lines(cases, fits, moving_fits, channel_fits)
     return out
