@@ -184,7 +184,10 @@ class Validation(unittest.TestCase):
         cases.append({"family": "crosses", "aspect_ratio": 2.9, "runout_ratio": 3.1, "runs": 1, "L0": 0.05})
         fits = {"crosses": (0.35, 1.9, 0.17, 0.41)}
         moving = {"crosses": ((1.09, 1.1, 0.15, 0.11), [0.98], 4)}
-        text = "\n".join(validation_summary.lines(table, validation.TABLE1, validation.TABLE1_BAR, "", cases, fits, moving,
+        glance = {"resolution": "One staircase resolves little.",
+                  "closures": {"K": {"params": {"d0": 139.5, "d1": 21.93}, "se": {"d0": 39.0, "d1": 0.93},
+                                     "paper_err": 0.012}}}
+        text = "\n".join(validation_summary.lines(table, validation.TABLE1, validation.TABLE1_BAR, glance, cases, fits, moving,
                                                   validation.channel_fits()))
         row = {line.split(" | ")[0]: line for line in text.splitlines() if line.startswith("| ")}
         self.assertIn("17.44 ± 0.42, meets the bar", row["| delta1"])
@@ -195,6 +198,9 @@ class Validation(unittest.TestCase):
         self.assertIn("0.165 ± 0.02, misses the bar", row["| beta"])
         self.assertNotIn("bar", row["| gamma"].split(" | ", 3)[3])  # gamma has none
         self.assertIn("climbed to H = 28 of 40", text)
+        self.assertIn("One staircase resolves little. The h_stop staircase", text)
+        self.assertIn("| Eq. 53, K = sigma_xx / sigma_zz | d0 = 139.5 ± 39 (paper 132, 0.2 standard errors); d1 = 21.93 ± "
+                      "0.93 (paper 21.5, 0.5 standard errors) | 0.012 | 0.013 |", text)
         self.assertIn("10 of its 16 cases", text)
         self.assertIn("Spheres: 1 of 2 aspect ratios", text)  # 7.0 at a = 8 lies below both fits (7.6, 9.2)
         self.assertIn("n = 1.9 ± 0.41 over every aspect ratio, 2.2 standard errors", text)

@@ -3,6 +3,8 @@ meets the bar, and what has not run yet. Built from the same tables as the secti
 (table1.json's record and the runout cases), so it cannot drift from them."""
 import math
 
+import validation_closures
+
 # The estimates of Table 1's h_stop curve, in the order the report gives them: name suffix in
 # table1.json, and the column heading.
 HSTOP_ESTIMATES = [("_mle", "every case (max. likelihood, 68 %)"), ("", "interval midpoints (Eq. 35)"),
@@ -12,7 +14,10 @@ FLOW_RULE_ESTIMATES = [("_with_paper_hstop", "Table 1's h_stop"), ("_mle", "the 
                        ("", "the interval fit's h_stop")]
 FLOW_MAP_CASES = 16  # H = 10, 20, 30, 40 by theta = 22, 24, 26, 28 degrees
 REALISATIONS = 3     # per aspect ratio (the issue's small-system plan)
-PAPER_FAMILIES = ("spheres", "crosses")  # the paper's own contact models; the rest are Talus' variants
+PAPER_FAMILIES = ("spheres", "crosses")
+CLOSURES = {"bulk_volume_fraction": ("Eq. 52, bulk volume fraction", ("c0", "c1", "c2")),
+            "K": ("Eq. 53, K = sigma_xx / sigma_zz", ("d0", "d1")),
+            "alpha": ("Eq. 54, shape factor alpha", ("d_lambda",))}  # the paper's own contact models; the rest are Talus' variants
 
 
 def within(value, paper, bar):
@@ -44,7 +49,28 @@ def estimate_text(table, name, suffix, paper, bar):
     return f"{v:.4g}{spread}{mark}"
 
 
-def weinhart_lines(table, paper_values, bars, resolution):
+def closure_lines(closures):
+    """Table 2's closures (Weinhart et al. 2012, Eqs. 52-54): each constant of Talus' fit beside the
+    paper's, and the rms deviation of Talus' flows from the paper's closure beside the paper's own."""
+    out = []
+    for key, (label, names) in CLOSURES.items():
+        b = closures.get(key)
+        if not b:
+            continue
+        consts = []
+        for n in names:
+            if "params" not in b:
+                break
+            v, e, paper = float(b["params"][n]), float(b["se"][n]), validation_closures.PAPER[n]
+            consts.append(f"{n} = {v:.4g} ± {e:.2g} (paper {paper:g}, {abs(v - paper) / e:.1f} standard errors)")
+        out.append(f"| {label} | {'; '.join(consts) or 'too few angles'} | {b['paper_err']:.3f} | "
+                   f"{validation_closures.PAPER_ERR[key]:.3f} |")
+    if not out:
+        return []
+    return ["| Table 2 closure | Talus' fit | err(Talus - paper's closure) | paper's own err |", "|---|---|---|---|"] + out + [""]
+
+
+def weinhart_lines(table, paper_values, bars, glance):
     out = ["**Weinhart et al. 2012, Table 1 (lambda = 1).** The bar: 0.5° on the angles, 10 % on A and beta.", "",
            "| quantity | Table 1 | bar | " + " | ".join(f"h_stop from {label}" for _, label in HSTOP_ESTIMATES) + " |",
            "|---|---|---|" + "---|" * len(HSTOP_ESTIMATES)]
@@ -59,7 +85,9 @@ def weinhart_lines(table, paper_values, bars, resolution):
         out.append(f"| {name} | {paper_values[name]:g} | {bar_text(bars[name])} | " + " | ".join(cells) + " |")
     staircase = ("complete" if table.get("staircase_complete") else
                  f"not complete (it has climbed to H = {table.get('staircase_max_H', 0):g} of 40)")
-    out += ["", (resolution + " " if resolution else "") +
+    resolution = glance.get("resolution", "")
+    out += [""] + closure_lines(glance.get("closures", {}))
+    out += [(resolution + " " if resolution else "") +
             f"The h_stop staircase is {staircase}; the flow map has {table.get('flow_map_cases', 0)} of its "
             f"{FLOW_MAP_CASES} cases. The sections below say where the estimates disagree and what was tested.", ""]
     return out
@@ -95,11 +123,12 @@ def huet_lines(cases, fits, moving_fits, channel_fits):
     return out + [""]
 
 
-def lines(table, paper_values, bars, resolution, cases, fits, moving_fits, channel_fits):
-    """`resolution`: what one staircase resolves of Table 1's curve, in a sentence (may be empty)."""
+def lines(table, paper_values, bars, glance, cases, fits, moving_fits, channel_fits):
+    """`glance`: {"resolution": what one staircase resolves of Table 1's curve, in a sentence;
+    "closures": validation_closures.closures of the steady flows}, either may be missing."""
     out = ["## At a glance", ""]
     if table:
-        out += weinhart_lines(table, paper_values, bars, resolution)
+        out += weinhart_lines(table, paper_values, bars, glance)
     if cases:
         out += huet_lines(cases, fits, moving_fits, channel_fits)
     return out
