@@ -59,7 +59,10 @@ def case_lines(chute_fits, staircase, base: Path, case, variants):
         arrest = r.get("arrest_time")
         arrest = f"{arrest:.0f}" if arrest not in ("", None) else ""
         out.append(f"| {label} | {r['flow_state']} | {arrest} | {r['h']:.2f} |")
-    return out + [""]
+    done = [r for _, r in rows if r is not None]
+    arrested = sum(1 for r in done if r["flow_state"] == "arrested")
+    verb = "arrests" if arrested == 1 else "arrest"
+    return out + ["", f"{arrested} of these {len(done)} runs {verb} within t = 500.", ""]
 
 
 def lines(chute_fits, staircase, base: Path):
