@@ -154,6 +154,7 @@ def lines(chute_fits, rows, paper, bars):
             f"realisation's arrest about the curve; Table 1: A = {paper['A']}, delta1 = {paper['delta1']}°, delta2 = "
             f"{paper['delta2']}° ({'; '.join(within)}). The paper's curve, with its own sigma ({sigma_p:.3f}°), "
             f"describes the outcomes worse: likelihood ratio 2 Delta(ln L) = {stat:.1f} for 3 parameters, "
-            f"probability {p:.3f} of a larger value. Unlike the interval fits this one reads the thick layers' "
+            f"probability {p:.3f} of a larger value by the chi-squared law (the synthetic staircases below calibrate "
+            "it). Unlike the interval fits this one reads the thick layers' "
             "single outcomes, which is what bounds A.")
     return ["", text], fitted
