@@ -148,6 +148,34 @@ TEST(DamBreak, SameSeedSameColumn) {
   EXPECT_NE(a["energies"].dump(), c["energies"].dump());
 }
 
+// dam_break.collapse_tangential switches the history rule when the gate opens, as Huet et al.
+// 2021, Fig. 19 collapses one settled column with and without memory: the column before the
+// gate is the same bits as the run without the key, the collapse is not, and the summary says
+// which rule it ran. A value that is not a rule names the file, line and key.
+TEST(DamBreak, CollapseTangentialSwitchesTheRuleAtTheGateOnly) {
+  // 100 spheres land by t = 0.25 s; the gate opens then, settled or not.
+  const std::vector<std::string> o = {"run.vtk_interval=0", "run.end_time=0.35", "dam_break.count=100",
+                                      "dam_break.settle_max_time=0.25"};
+  const nlohmann::json with = run_example("examples/dam_break_spheres.toml", o, "dam_break_collapse_memory");
+  std::vector<std::string> switched = o;
+  switched.push_back("dam_break.collapse_tangential=memoryless");
+  const nlohmann::json without = run_example("examples/dam_break_spheres.toml", switched, "dam_break_collapse_memoryless");
+  ASSERT_EQ(with["dam_break"]["phase"], "collapsing");
+  EXPECT_EQ(with["dam_break"]["before_gate"].dump(), without["dam_break"]["before_gate"].dump());
+  EXPECT_NE(with["energies"].dump(), without["energies"].dump());
+  EXPECT_FALSE(with["dam_break"].contains("collapse_tangential"));
+  EXPECT_EQ(without["dam_break"]["collapse_tangential"], "memoryless");
+
+  io::ScenarioFile f = io::ScenarioFile::from_file(fs::path(TALUS_SOURCE_DIR) / "examples" / "dam_break_spheres.toml");
+  f.set_override("dam_break.collapse_tangential=none");
+  try {
+    load_scenario(f);
+    ADD_FAILURE() << "no InputError";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dam_break.collapse_tangential"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace talus
 

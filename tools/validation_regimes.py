@@ -13,7 +13,8 @@ def model_of(sets):
     """The contact points per part pair and the gate of a family, from its overrides."""
     points = "one" if "contact.manifold=false" in sets else "up to four"
     gate = "removed at t = 0" if "dam_break.gate=removed" in sets else "pulled (43 m/s^2, friction)"
-    memory = ", no memory" if "contact.tangential=memoryless" in sets else ""
+    memory = (", no memory" if "contact.tangential=memoryless" in sets else
+              ", no memory from the gate's opening" if "dam_break.collapse_tangential=memoryless" in sets else "")
     warm = ""  # GJK's start matters to the one-point model only; from last step's simplex by default
     if points == "one":
         warm = ", GJK started cold" if "contact.gjk_warm_start=false" in sets else ", GJK from last step's simplex"

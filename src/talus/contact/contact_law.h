@@ -22,6 +22,15 @@ enum class TangentialModel {
   elastic_spring,  ///< elastic displacement kept tangential by Eq. 9 (Weinhart et al. 2012, Eqs. 7-9, Alg. 2)
 };
 
+inline const char* tangential_model_name(TangentialModel m) {
+  switch (m) {
+    case TangentialModel::memoryless: return "memoryless";
+    case TangentialModel::elastic_spring: return "elastic_spring";
+    case TangentialModel::memory: break;
+  }
+  return "memory";
+}
+
 struct ContactGeometry {
   Vec3 normal;               ///< unit normal, from j (or the wall) towards i
   double overlap = 0;        ///< m, delta_n > 0

@@ -83,14 +83,6 @@ const TangentialChoice& tangential_named(const std::string& name) {
     if (name == t.name) return t;
   return kTangential[0];
 }
-const char* rule_name(TangentialModel m) {
-  switch (m) {
-    case TangentialModel::memoryless: return "memoryless";
-    case TangentialModel::elastic_spring: return "elastic_spring";
-    case TangentialModel::memory: break;
-  }
-  return "memory";
-}
 
 // The shorthand contact.model names a history rule and the clamp that goes with it.
 std::string model_shorthand(const io::ScenarioFile& f) {
@@ -312,8 +304,8 @@ ContactParams read_contact(const io::ScenarioFile& f, const std::vector<std::str
   const std::string tangential = r.choice("tangential", tangential_names()).value_or(shorthand);
   const TangentialChoice& t = tangential_named(tangential);
   if (tangential != "none" && t.rule != ctx.model)
-    f.fail(r.key_of("tangential"), "\"" + tangential + "\" keeps the " + rule_name(t.rule) +
-                                       " history, but this run's contacts keep the " + rule_name(ctx.model) +
+    f.fail(r.key_of("tangential"), "\"" + tangential + "\" keeps the " + tangential_model_name(t.rule) +
+                                       " history, but this run's contacts keep the " + tangential_model_name(ctx.model) +
                                        " history (contact.tangential): one history rule per run");
   // Huet et al. 2021, Eq. (5) bounds the force at zero; Weinhart et al. 2012, Eq. (3) does not.
   const auto clamp_key = r.where("normal_clamp");

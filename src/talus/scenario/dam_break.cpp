@@ -32,6 +32,12 @@ DamBreakSetup read_dam_break(const io::ScenarioFile& f) {
   s.stop_mean_speed = f.get_or<double>("dam_break.stop_mean_speed", s.stop_mean_speed, io::positive);
   s.collapse_min_time = f.get_or<double>("dam_break.collapse_min_time", s.collapse_min_time, io::non_negative);
   s.pixel = f.get_or<double>("dam_break.pixel", s.pixel, io::positive);
+  if (f.has("dam_break.collapse_tangential")) {
+    const std::string rule = f.get_choice("dam_break.collapse_tangential", {"memory", "memoryless", "elastic_spring"});
+    s.collapse_tangential = rule == "memoryless"       ? TangentialModel::memoryless
+                            : rule == "elastic_spring" ? TangentialModel::elastic_spring
+                                                       : TangentialModel::memory;
+  }
   return s;
 }
 

@@ -9,6 +9,7 @@
 // (dam_break_observer.h).
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -39,6 +40,9 @@ struct DamBreakSetup {
   double stop_mean_speed = std::numeric_limits<double>::infinity();  ///< m/s: ... and the mean speed is below
   double collapse_min_time = 0.1; ///< s after the gate opened, before the stop test
   double pixel = 0.43e-3;       ///< m, top-view pixel (Sec. III C camera)
+  // The tangential history rule from the gate's opening on; empty: contact.tangential's all
+  // along. Huet et al. 2021, Fig. 19 collapses the same settled column with and without memory.
+  std::optional<TangentialModel> collapse_tangential;
 };
 
 // Reads [dam_break]; species are checked by the caller.

@@ -156,12 +156,15 @@ void DamBreakObserver::open_gate(World& world, const Diagnostics& d, bool static
 
   // Huet et al. 2021, Sec. III C: at t = 0 the gate is removed (or starts rising).
   world.walls_mutable()[static_cast<std::size_t>(walls_.gate)].motion.start_time = gate_time_;
+  // The checkpoints carry the rule on (WorldState), so a resumed collapse keeps it.
+  if (setup_.collapse_tangential) world.set_tangential_model(*setup_.collapse_tangential);
   phase_ = Phase::collapsing;
 }
 
 void DamBreakObserver::finish(World& world, const std::filesystem::path& out, nlohmann::json& summary) {
   json db = {{"phase", phase_ == Phase::settling ? "settling" : phase_ == Phase::collapsing ? "collapsing" : "over"},
              {"gate", setup_.gate_pulled ? "pulled" : "removed"}};
+  if (setup_.collapse_tangential) db["collapse_tangential"] = tangential_model_name(*setup_.collapse_tangential);
   summary["L0"] = setup_.gate_position;
   summary["W0"] = setup_.width;
   if (phase_ == Phase::settling) {
