@@ -525,7 +525,7 @@ class Validation(unittest.TestCase):
             text, verdict = validation_resolution.lines(
                 staircase, chute_fits, staircase_rows, t1, validation.TABLE1_BAR, 0.1,
                 {validation_resolution.INTERVALS: dict(t1), validation_resolution.LIKELIHOOD: dict(t1, delta1=10.0)},
-                0.0)
+                (0.0, 1.0))
         finally:
             validation_resolution.REPLICAS = saved
         rows_by = {tuple(line.split(" | ")[:2]): line for line in text if line.startswith("| ")}

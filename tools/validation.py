@@ -1174,7 +1174,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
         resolution_lines, resolution = validation_resolution.lines(
             study_module("hstop_staircase").Staircase, chute_fits, staircase, TABLE1, TABLE1_BAR, mle["sigma"],
             {validation_resolution.INTERVALS: hs["params"], validation_resolution.LIKELIHOOD: mle["params"]},
-            validation_hstop_mle.against_paper(chute_fits, validation_hstop_mle.cases_of(staircase), mle, TABLE1)[1])
+            validation_hstop_mle.against_paper(chute_fits, validation_hstop_mle.cases_of(staircase), mle, TABLE1)[1:])
         lines += [""] + resolution_lines
     if not determined(hs):
         top = max((r["h"] for r in intervals if r["kind"] == "angle"), default=0.0)
@@ -1204,13 +1204,8 @@ def weinhart_report(lines, figures, base=VALIDATION):
         if v is None:
             lines.append(f"| {name} | not yet fitted | {paper} | | | | {mle_text} |")
             continue
-        bar = TABLE1_BAR[name]
-        if bar is None:
-            verdict = "(no bar)"
-        elif bar[0] == "deg":
-            verdict = "yes" if abs(v - paper) <= bar[1] else "no"
-        else:
-            verdict = "yes" if abs(v - paper) <= bar[1] * paper else "no"
+        met = validation_summary.within(v, paper, TABLE1_BAR[name])
+        verdict = "(no bar)" if met is None else ("yes" if met else "no")
         held = table.get(name + "_with_paper_A")
         held_text = (f"{fmt(held, table[name + '_with_paper_A_err'], 4)}" if held is not None
                      else ("(held)" if name == "A" and "delta1_with_paper_A" in table else ""))

@@ -10,6 +10,8 @@ import math
 
 import numpy as np
 
+import validation_summary
+
 NAMES = ("A", "delta1", "delta2")
 
 
@@ -140,12 +142,12 @@ def lines(chute_fits, rows, paper, bars):
     sigma_p, stat, p = against_paper(chute_fits, cases, fitted, paper)
     within = []
     for name in NAMES:
-        kind, size = bars[name]
-        tol = size if kind == "deg" else size * paper[name]
         lo, hi = iv[name]
-        diff = (f"{q[name] - paper[name]:+.2f}°" if kind == "deg" else f"{100 * (q[name] / paper[name] - 1):+.0f} %")
-        bar = f"{size:g}°" if kind == "deg" else f"{100 * size:g} %"
-        within.append(f"{name} {diff}, {'within' if abs(q[name] - paper[name]) <= tol else 'outside'} the {bar} bar, "
+        diff = (f"{q[name] - paper[name]:+.2f}°" if bars[name][0] == "deg" else
+                f"{100 * (q[name] / paper[name] - 1):+.0f} %")
+        met = validation_summary.within(q[name], paper[name], bars[name])
+        bar = validation_summary.bar_text(bars[name])
+        within.append(f"{name} {diff}, {'within' if met else 'outside'} the {bar} bar, "
                       f"Table 1's value {'inside' if lo <= paper[name] <= hi else 'outside'} the interval")
     text = (f"**Every case at once** (maximum likelihood: a case at height h and angle theta flows with probability "
             f"Phi((theta - theta_stop(h)) / sigma), theta_stop from Eq. 35): the {fitted['n']} cases of the staircase "

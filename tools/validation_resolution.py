@@ -13,11 +13,7 @@ import math
 import numpy as np
 
 import validation_hstop_mle
-
-
-def chi2_sf(x, dof):
-    from scipy.stats import chi2
-    return float(chi2.sf(max(x, 0.0), dof))
+from validation_summary import within
 
 REPLICAS = 200
 SEED = 2012
@@ -78,15 +74,11 @@ def ensemble(staircase_class, chute_fits, paper, sigma, line, h_max, replicas, s
     return {label: {k: np.array(v) for k, v in values.items()} for label, values in out.items()}, np.array(stats)
 
 
-def meets(value, paper, bar):
-    kind, size = bar
-    return abs(value - paper) <= (size if kind == "deg" else size * abs(paper))
-
-
-def lines(staircase_class, chute_fits, rows, paper, bars, sigma, talus, talus_stat):
+def lines(staircase_class, chute_fits, rows, paper, bars, sigma, talus, talus_test):
     """The report's paragraph and table, and its verdict in a sentence or two. `talus`: {estimator
-    label: {name: value}}, Talus' own fits; `talus_stat`: its likelihood-ratio statistic of Table 1's
-    curve (validation_hstop_mle.against_paper)."""
+    label: {name: value}}, Talus' own fits; `talus_test`: the likelihood-ratio statistic of Table 1's
+    curve against Talus' cases and its chi-squared p-value (validation_hstop_mle.against_paper)."""
+    talus_stat, chi2_p = talus_test
     line = height_line(rows)
     if line is None or not sigma:
         return [], ""
@@ -98,35 +90,32 @@ def lines(staircase_class, chute_fits, rows, paper, bars, sigma, talus, talus_st
            "| fit | quantity | Table 1 | 16 to 84 % of the synthetic fits | within the bar | Talus | Talus' percentile |",
            "|---|---|---|---|---|---|---|"]
     fits, stats = ensemble(staircase_class, chute_fits, paper, sigma, line, 40.0, REPLICAS)
-    outside = []
+    outside, shares = [], {label: {} for label in fits}
     for label, values in fits.items():
         for name in validation_hstop_mle.NAMES:
             v = values[name]
             if len(v) == 0:
                 continue
             lo, hi = np.percentile(v, [16, 84])
-            share = np.mean([meets(x, paper[name], bars[name]) for x in v])
+            share = shares[label][name] = 100 * np.mean([within(x, paper[name], bars[name]) for x in v])
             mine = talus.get(label, {}).get(name)
             percentile = 100 * np.mean(v < mine) if mine is not None else None
             where = f"{percentile:.0f}" if percentile is not None else "-"
             if percentile is not None and not 5 <= percentile <= 95:
                 outside.append(f"{name} of the {label} fit ({percentile:.0f})")
             mine_text = f"{mine:.4g}" if mine is not None else "-"
-            out.append(f"| {label} | {name} | {paper[name]:g} | {lo:.4g} to {hi:.4g} | {100 * share:.0f} % of "
+            out.append(f"| {label} | {name} | {paper[name]:g} | {lo:.4g} to {hi:.4g} | {share:.0f} % of "
                        f"{len(v)} | {mine_text} | {where} |")
     fitted = len(fits[LIKELIHOOD]["A"])
-    intervals = fits[INTERVALS]
-    shares = {name: 100 * np.mean([meets(x, paper[name], bars[name]) for x in intervals[name]]) for name in
-              validation_hstop_mle.NAMES if len(intervals[name])}
     resolved = ("Drawn from Table 1's curve itself, one staircase's interval fit meets the bars on " +
-                ", ".join(f"{name} in {share:.0f} %" for name, share in shares.items()) + " of cases. ")
+                ", ".join(f"{name} in {share:.0f} %" for name, share in shares[INTERVALS].items()) + " of cases. ")
     verdict = (resolved + ("Every fit of Talus' staircase lies within the central 90 % of the synthetic ones: Talus' "
                            "staircase agrees with Table 1's curve as closely as a staircase drawn from that curve does, "
                            "parameter by parameter." if not outside else
                            "Outside the central 90 % of the synthetic fits (percentile): " + ", ".join(outside) + ".") +
                f" Jointly, the likelihood ratio of Table 1's curve against the best one reaches Talus' "
                f"{talus_stat:.1f} in {100 * np.mean(stats >= talus_stat):.0f} % of the synthetic staircases (the "
-               f"chi-squared law for 3 parameters says {100 * chi2_sf(talus_stat, 3):.1f} %).")
+               f"chi-squared law for 3 parameters says {100 * chi2_p:.1f} %).")
     out += ["", f"The maximum-likelihood fit exists for {fitted} of the {REPLICAS} synthetic staircases; in the others "
             "a range of curves separates the arrested cases from the flowing ones exactly (sigma -> 0), and the fit is "
             "not unique. " + verdict, ""]

@@ -36,9 +36,11 @@ def bar_text(bar):
 
 
 def estimate_text(table, name, suffix, paper, bar):
+    if name == "A" and suffix == "_with_paper_A":
+        return "(held)"
     v = table.get(name + suffix)
     if v is None:
-        return "-" if suffix != "_with_paper_A" or name != "A" else "(held)"
+        return "-"
     lo, hi = table.get(name + suffix + "_lo"), table.get(name + suffix + "_hi")
     spread = f" ({lo:.4g} to {hi:.4g})" if lo is not None and hi is not None else ""
     err = table.get(name + suffix + "_err")

@@ -33,10 +33,13 @@ DamBreakSetup read_dam_break(const io::ScenarioFile& f) {
   s.collapse_min_time = f.get_or<double>("dam_break.collapse_min_time", s.collapse_min_time, io::non_negative);
   s.pixel = f.get_or<double>("dam_break.pixel", s.pixel, io::positive);
   if (f.has("dam_break.collapse_tangential")) {
-    const std::string rule = f.get_choice("dam_break.collapse_tangential", {"memory", "memoryless", "elastic_spring"});
-    s.collapse_tangential = rule == "memoryless"       ? TangentialModel::memoryless
-                            : rule == "elastic_spring" ? TangentialModel::elastic_spring
-                                                       : TangentialModel::memory;
+    constexpr TangentialModel kRules[] = {TangentialModel::memory, TangentialModel::memoryless,
+                                          TangentialModel::elastic_spring};
+    std::vector<std::string> names;
+    for (TangentialModel m : kRules) names.push_back(tangential_model_name(m));
+    const std::string rule = f.get_choice("dam_break.collapse_tangential", names);
+    for (TangentialModel m : kRules)
+      if (rule == tangential_model_name(m)) s.collapse_tangential = m;
   }
   return s;
 }
