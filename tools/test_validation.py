@@ -27,6 +27,7 @@ import validation  # noqa: E402
 import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
 import validation_hstop_mle  # noqa: E402
+import validation_memory  # noqa: E402
 import validation_regimes  # noqa: E402
 import validation_resolution  # noqa: E402
 import validation_summary  # noqa: E402
@@ -266,6 +267,35 @@ class Validation(unittest.TestCase):
         self.assertNotIn("| 0.04 |", text)  # only the two widest columns
         self.assertNotIn("spheres", text.split("Stable runs")[1])
         self.assertIn("Stable runs among these columns: crosses 1 of 3; crosses_manifold 0 of 1.", text)
+
+    def test_memory_pairs_compare_one_column_under_two_laws(self):
+        # Sec. V B: each seed's two collapses are paired; the mean difference carries the standard
+        # error of the paired differences; a pair whose columns differ at the gate is counted apart.
+        def summary(runout, before, stop="collapse_over"):
+            return {"stop_reason": stop, "H0": 0.18, "coordination_number": 7.5,
+                    "dam_break": {"runout_ratio": runout, "height_ratio": 3.0, "com_ratio": 3.4,
+                                  "displaced_fraction": 0.7, "collapse_duration": 1.2,
+                                  "before_gate": {"whole": {"contact_points": before}}}}
+        cases = {1: (6.0, 5.0, 100, 100), 2: (6.2, 5.4, 100, 100), 3: (5.8, 4.6, 100, 101)}
+        for seed, (with_, without, before_with, before_without) in cases.items():
+            for family, runout, before in ((validation_memory.WITH, with_, before_with),
+                                           (validation_memory.WITHOUT, without, before_without)):
+                folder = self.base / "huet2021" / family / validation_memory.POINT / f"seed_{seed}"
+                folder.mkdir(parents=True)
+                (folder / "summary.json").write_text(json.dumps(summary(runout, before)))
+        # A seed cut off without memory does not pair.
+        cut = self.base / "huet2021" / validation_memory.WITHOUT / validation_memory.POINT / "seed_4"
+        cut.mkdir(parents=True)
+        (cut / "summary.json").write_text(json.dumps(summary(1.0, 100, stop="interrupted")))
+        text = "\n".join(validation_memory.lines(self.base))
+        diffs = [-1.0, -0.8, -1.2]
+        se = float(np.std(diffs, ddof=1) / math.sqrt(3))
+        self.assertIn(f"| (L_inf - L0)/L0 | 6, 5 | 6.2, 5.4 | 5.8, 4.6 | {-1.0:+.3g} ± {se:.2g} |", text)
+        self.assertIn("2 of 3 pairs had the same column", text)
+        self.assertIn(f"(L_inf - L0)/L0 {-1.0 / se:+.1f}", text)
+        self.assertNotIn("seed_4", text)
+        empty = Path(self.tmp.name) / "none"
+        self.assertIn("No pair has finished yet.", "\n".join(validation_memory.lines(empty)))
 
     def test_table3_column_from_wall_densities(self):
         # Runs in the paper's column (L0, W0, H0) at known wall densities, counted with 3 % noise,

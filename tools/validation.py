@@ -31,6 +31,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
 import validation_hstop_mle  # noqa: E402
+import validation_memory  # noqa: E402
 import validation_regimes  # noqa: E402
 import validation_resolution  # noqa: E402
 import validation_sensitivity  # noqa: E402
@@ -557,6 +558,7 @@ def huet_report(lines, figures, base=VALIDATION):
     lines += runout_verdict(fits) + spheres_against_channel_experiments(cases) + moving_columns_fit_lines(cases)
     runs = family_summaries(base)
     lines += [""] + validation_regimes.lines(runs, {f.name: f.sets for f in FAMILIES})
+    lines += validation_memory.lines(base, out / "fig19_memory_speeds.png")
     com_lines, com_fits = validation_centre_of_mass.lines_and_fits(runs)
     if com_lines:
         path = validation_centre_of_mass.plot(runs, com_fits, out / "fig24_centre_of_mass.png")
