@@ -19,6 +19,7 @@
 The runs themselves go to validation/runs/ (not committed) unless --runs says otherwise.
 """
 import argparse
+import csv
 import json
 import math
 import os
@@ -71,7 +72,23 @@ def run_study_command(args, command, *options):
 
 
 KEPT_FILES = ["summary.json", "collapse_speeds.csv", "force_pdf.csv", "fabric.csv", "height_profile.csv",
-              "fig14_force_network.png"]  # the picture only where `talus plot` drew it: its CSV is megabytes
+              "energy_series.csv", "fig14_force_network.png"]  # the picture only where `talus plot` drew it: its CSV is megabytes
+# The columns of a run's timeseries.csv kept in energy_series.csv: the gravitational energy gives the
+# height of the centre of mass through the collapse (validation_memory.py), at a tenth of the size.
+ENERGY_COLUMNS = ["time", "gravitational", "kinetic_translational", "kinetic_rotational", "contacts"]
+
+
+def write_energy_series(run: Path):
+    """run/energy_series.csv from run/timeseries.csv, when the run has one (a restored run has not)."""
+    source = run / "timeseries.csv"
+    if not source.exists():
+        return
+    with open(source, newline="") as f, open(run / "energy_series.csv", "w", newline="") as out:
+        reader = csv.DictReader(f)
+        writer = csv.writer(out)
+        writer.writerow(ENERGY_COLUMNS)
+        for row in reader:
+            writer.writerow([f"{float(row[c]):.7g}" for c in ENERGY_COLUMNS])
 
 
 class Family:
@@ -314,6 +331,7 @@ def compact(fam: Family, runs_dir: Path):
             continue
         dest = fam.folder(VALIDATION) / run_dir.parent.name / run_dir.name
         dest.mkdir(parents=True, exist_ok=True)
+        write_energy_series(run_dir)
         copy_present(KEPT_FILES, run_dir, dest)
         kept += 1
     print(f"{fam.paper}/{fam.name}: {kept} runs kept under {fam.folder(VALIDATION)}")

@@ -92,10 +92,54 @@ def lines(base: Path, figure: Path | None = None):
         out.append("Mean difference in its standard errors: " + "; ".join(verdicts) +
                    f" ({len(found)} pairs: a t of 4.3 is the two-sided 95 % bound for 2 degrees of freedom, 2.6 "
                    "for 5).")
+    out += frame_lines(found)
     if figure is not None:
         path = plot(found, figure)
-        out += ["", f"![mean speed with and without memory]({path.relative_to(base)})"]
+        out += ["", f"![centre of mass and mean speed with and without memory]({path.relative_to(base)})"]
     return out + [""]
+
+
+# Fig. 19's frames, in seconds after the gate's opening (its t = 0).
+FRAMES = [0.15, 0.30, 0.45, 0.60, 0.75, 0.90, 1.05]
+
+
+def centre_height(folder: Path, summary):
+    """(times after the gate's opening, z_cm / z_cm at the opening) from the gravitational energy
+    M g z_cm of energy_series.csv (the floor at z = 0); None without the file."""
+    path = folder / "energy_series.csv"
+    if not path.exists():
+        return None
+    with open(path) as f:
+        rows = [(float(r["time"]), float(r["gravitational"])) for r in csv.DictReader(f)]
+    t_gate = summary["dam_break"]["gate_open_time"]
+    at_gate = interpolate(rows, t_gate)
+    return [t - t_gate for t, _ in rows if t >= t_gate], [e / at_gate for t, e in rows if t >= t_gate]
+
+
+def interpolate(rows, t):
+    for (t0, e0), (t1, e1) in zip(rows, rows[1:]):
+        if t0 <= t <= t1:
+            return e0 + (e1 - e0) * (t - t0) / (t1 - t0) if t1 > t0 else e0
+    return rows[-1][1] if rows and t > rows[-1][0] else math.nan
+
+
+def frame_lines(found):
+    """The centre of mass's height at Fig. 19's frames, with and without memory, and the paired
+    difference."""
+    curves = [(centre_height(fw, w), centre_height(fwo, wo)) for _, w, wo, fw, fwo in found]
+    curves = [(a, b) for a, b in curves if a and b]
+    if not curves:
+        return []
+    out = ["", f"The centre of mass's height z_cm / z_cm(gate) at the paper's frames (Fig. 19; {len(curves)} pairs, "
+           "from the gravitational energy):", "", "| t after the gate (s) | with memory | without | difference (without - with) |",
+           "|---|---|---|---|"]
+    for frame in FRAMES:
+        a = [interpolate(list(zip(*c[0])), frame) for c in curves]
+        b = [interpolate(list(zip(*c[1])), frame) for c in curves]
+        m, e = paired([y - x for x, y in zip(a, b)])
+        diff = f"{m:+.3f} ± {e:.3f}" if math.isfinite(e) else f"{m:+.3f}"
+        out.append(f"| {frame:.2f} | {sum(a) / len(a):.3f} | {sum(b) / len(b):.3f} | {diff} |")
+    return out
 
 
 def read_speeds(folder: Path):
@@ -108,15 +152,23 @@ def plot(found, path: Path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for k, (seed, _, _, with_, without) in enumerate(found):
-        for folder, colour, label in ((with_, "k", "with memory"), (without, "tab:red", "without memory")):
+    fig, (height, speed) = plt.subplots(1, 2, figsize=(11, 4))
+    for k, (seed, w, wo, with_, without) in enumerate(found):
+        for folder, summary, colour, label in ((with_, w, "k", "with memory"), (without, wo, "tab:red", "without memory")):
             t, v = read_speeds(folder)
-            ax.plot(t, v, color=colour, lw=1, alpha=0.8, label=label if k == 0 else None)
-    ax.set_xlabel("t / tau, tau = sqrt(H0 / g)")
-    ax.set_ylabel("mean speed / sqrt(g H0)")
-    ax.set_title(f"1000 crosses, L0 = 4 cm: one column per seed ({len(found)}), two contact laws")
-    ax.legend()
+            speed.plot(t, v, color=colour, lw=1, alpha=0.8, label=label if k == 0 else None)
+            curve = centre_height(folder, summary)
+            if curve:
+                height.plot(*curve, color=colour, lw=1, alpha=0.8, label=label if k == 0 else None)
+    for frame in FRAMES:
+        height.axvline(frame, color="0.85", lw=0.8, zorder=0)
+    height.set_xlabel("t after the gate's opening (s); grey: Fig. 19's frames")
+    height.set_ylabel("z_cm / z_cm(gate)")
+    speed.set_xlabel("t / tau, tau = sqrt(H0 / g)")
+    speed.set_ylabel("mean speed / sqrt(g H0)")
+    fig.suptitle(f"1000 crosses, L0 = 4 cm: one column per seed ({len(found)}), two contact laws")
+    for ax in (height, speed):
+        ax.legend()
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=120)
