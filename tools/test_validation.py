@@ -291,6 +291,9 @@ class Validation(unittest.TestCase):
                             "kinetic_translational": 0, "kinetic_rotational": 0, "contacts": 9, "max_speed": 1}
                            for t in np.arange(0, 1.6, 0.01)])
                 validation.write_energy_series(folder)
+                write_csv(folder / "collapse_speeds.csv",
+                          [{"time": t, "time_over_tau": t / 0.137, "mean_speed": 0.01 * rate, "speed_over_sqrt_gH0": 0}
+                           for t in np.arange(0.005, 1.2, 0.005)])
                 self.assertEqual(next(csv.reader(open(folder / "energy_series.csv"))), validation.ENERGY_COLUMNS)
         # A seed cut off without memory does not pair.
         cut = self.base / "huet2021" / validation_memory.WITHOUT / validation_memory.POINT / "seed_4"
@@ -303,7 +306,8 @@ class Validation(unittest.TestCase):
         self.assertIn("2 of 3 pairs had the same column", text)
         self.assertIn(f"(L_inf - L0)/L0 {-1.0 / se:+.1f}", text)
         self.assertNotIn("seed_4", text)
-        self.assertIn("| 0.60 | 0.880 | 0.820 | -0.060 ± 0.000 |", text)  # 1 - 0.2 x 0.6, 1 - 0.3 x 0.6
+        self.assertIn("| 0.60 | 0.880 | 0.820 | -0.060 ± 0.000 | 2 | 3 |", text)  # 1 - 0.2 x 0.6, 1 - 0.3 x 0.6
+        self.assertIn("| 3.00 | 0.762 | 0.643 |", text)  # the runs' last records, at t = 1.59
         empty = Path(self.tmp.name) / "none"
         self.assertIn("No pair has finished yet.", "\n".join(validation_memory.lines(empty)))
 

@@ -99,8 +99,9 @@ def lines(base: Path, figure: Path | None = None):
     return out + [""]
 
 
-# Fig. 19's frames, in seconds after the gate's opening (its t = 0).
-FRAMES = [0.15, 0.30, 0.45, 0.60, 0.75, 0.90, 1.05]
+# Fig. 19's frames, in seconds after the gate's opening (its t = 0). A run that ended before a frame
+# (its collapse over: mean speed below 0.1 mm/s) is read at its last record.
+FRAMES = [0.15, 0.30, 0.45, 0.60, 0.75, 0.90, 1.05, 3.00]
 
 
 def centre_height(folder: Path, summary):
@@ -130,22 +131,30 @@ def frame_lines(found):
     curves = [(a, b) for a, b in curves if a and b]
     if not curves:
         return []
-    out = ["", f"The centre of mass's height z_cm / z_cm(gate) at the paper's frames (Fig. 19; {len(curves)} pairs, "
-           "from the gravitational energy):", "", "| t after the gate (s) | with memory | without | difference (without - with) |",
-           "|---|---|---|---|"]
+    speeds = [(list(zip(*read_speeds(fw, "time", "mean_speed"))), list(zip(*read_speeds(fwo, "time", "mean_speed"))))
+              for _, _, _, fw, fwo in found]
+    out = ["", f"The centre of mass's height z_cm / z_cm(gate) (from the gravitational energy) and the mean speed at the "
+           f"paper's frames (Fig. 19; {len(curves)} pairs; a run whose collapse was over before a frame is read at its "
+           "end):", "", "| t after the gate (s) | z_cm with memory | without | difference (without - with) | "
+           "mean speed with memory (mm/s) | without (mm/s) |", "|---|---|---|---|---|---|"]
     for frame in FRAMES:
         a = [interpolate(list(zip(*c[0])), frame) for c in curves]
         b = [interpolate(list(zip(*c[1])), frame) for c in curves]
         m, e = paired([y - x for x, y in zip(a, b)])
         diff = f"{m:+.3f} ± {e:.3f}" if math.isfinite(e) else f"{m:+.3f}"
-        out.append(f"| {frame:.2f} | {sum(a) / len(a):.3f} | {sum(b) / len(b):.3f} | {diff} |")
-    return out
+        va = [1000 * interpolate(w, frame) for w, _ in speeds]
+        vb = [1000 * interpolate(wo, frame) for _, wo in speeds]
+        out.append(f"| {frame:.2f} | {sum(a) / len(a):.3f} | {sum(b) / len(b):.3f} | {diff} | "
+                   f"{sum(va) / len(va):.3g} | {sum(vb) / len(vb):.3g} |")
+    ended = [f"{seed}: {w.get('stop_reason')} at {w['dam_break']['collapse_duration']:.2f} s, "
+             f"{wo.get('stop_reason')} at {wo['dam_break']['collapse_duration']:.2f} s" for seed, w, wo, _, _ in found]
+    return out + ["", "How each pair's runs ended, with and without memory (time after the gate): " + "; ".join(ended) + "."]
 
 
-def read_speeds(folder: Path):
+def read_speeds(folder: Path, x="time_over_tau", y="speed_over_sqrt_gH0"):
     with open(folder / "collapse_speeds.csv") as f:
         rows = list(csv.DictReader(f))
-    return [float(r["time_over_tau"]) for r in rows], [float(r["speed_over_sqrt_gH0"]) for r in rows]
+    return [float(r[x]) for r in rows], [float(r[y]) for r in rows]
 
 
 def plot(found, path: Path):
