@@ -291,6 +291,9 @@ class Validation(unittest.TestCase):
                             "kinetic_translational": 0, "kinetic_rotational": 0, "contacts": 9, "max_speed": 1}
                            for t in np.arange(0, 1.6, 0.01)])
                 validation.write_energy_series(folder)
+                (folder / "bottom_region.json").write_text(json.dumps(
+                    {"before": 250, "final": 250 if family == validation_memory.WITH else 275,
+                     "median_displacement": 0.004, "moved_more_than_a_particle": 0.1}))
                 write_csv(folder / "collapse_speeds.csv",
                           [{"time": t, "time_over_tau": t / 0.137, "mean_speed": 0.01 * rate, "speed_over_sqrt_gH0": 0}
                            for t in np.arange(0.005, 1.2, 0.005)])
@@ -307,9 +310,32 @@ class Validation(unittest.TestCase):
         self.assertIn(f"(L_inf - L0)/L0 {-1.0 / se:+.1f}", text)
         self.assertNotIn("seed_4", text)
         self.assertIn("| 0.60 | 0.880 | 0.820 | -0.060 ± 0.000 | 2 | 3 |", text)  # 1 - 0.2 x 0.6, 1 - 0.3 x 0.6
-        self.assertIn("| 3.00 | 0.762 | 0.643 |", text)  # the runs' last records, at t = 1.59
+        self.assertIn("| 3.00 | 0.762 | 0.643 |", text)
+        self.assertIn("| crosses there at the end / before the gate | 1.000, 1.100 | 1.000, 1.100 | 1.000, 1.100 | +0.1 ± 0 |",
+                      text)  # the runs' last records, at t = 1.59
         empty = Path(self.tmp.name) / "none"
         self.assertIn("No pair has finished yet.", "\n".join(validation_memory.lines(empty)))
+
+    def test_bottom_region_counts_and_displacements_from_the_two_states(self):
+        # Sec. V B: the crosses centred in the column's bottom quarter (x < L0, z < H0 / 4) before
+        # the gate, at the end, and how far those that started there moved.
+        run = self.base / "run"
+        run.mkdir()
+        (run / "summary.json").write_text(json.dumps({"L0": 0.04, "H0": 0.2, "dam_break": {"particle_size": 0.027}}))
+
+        def state(centres):
+            return {"particles": [[i, 0, 1, False, 1.0, 0.01, 1e-6, c, [0, 0, 0], [0, 0, 0], [1, 0, 0, 0]]
+                                  for i, c in enumerate(centres)]}
+        before = [[0.01, 0.1, 0.01], [0.03, 0.1, 0.04], [0.02, 0.1, 0.1], [0.05, 0.1, 0.01]]
+        after = [[0.01, 0.1, 0.01], [0.06, 0.1, 0.04], [0.02, 0.1, 0.03], [0.03, 0.1, 0.02]]
+        (run / "state_before_gate.json").write_text(json.dumps(state(before)))
+        (run / "state_final.json").write_text(json.dumps(state(after)))
+        validation.write_bottom_region(run)
+        r = json.loads((run / "bottom_region.json").read_text())
+        self.assertEqual((r["before"], r["final"]), (2, 3))  # 0 and 1; then 0, 2 and 3
+        self.assertAlmostEqual(r["mean_displacement"], 0.015)
+        self.assertAlmostEqual(r["median_displacement"], 0.015)
+        self.assertAlmostEqual(r["moved_more_than_a_particle"], 0.5)
 
     def test_table3_column_from_wall_densities(self):
         # Runs in the paper's column (L0, W0, H0) at known wall densities, counted with 3 % noise,

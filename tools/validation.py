@@ -24,6 +24,7 @@ import json
 import math
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 from pathlib import Path
@@ -72,10 +73,37 @@ def run_study_command(args, command, *options):
 
 
 KEPT_FILES = ["summary.json", "collapse_speeds.csv", "force_pdf.csv", "fabric.csv", "height_profile.csv",
-              "energy_series.csv", "fig14_force_network.png"]  # the picture only where `talus plot` drew it: its CSV is megabytes
+              "energy_series.csv", "bottom_region.json", "fig14_force_network.png"]  # the picture only where `talus plot` drew it: its CSV is megabytes
 # The columns of a run's timeseries.csv kept in energy_series.csv: the gravitational energy gives the
 # height of the centre of mass through the collapse (validation_memory.py), at a tenth of the size.
 ENERGY_COLUMNS = ["time", "gravitational", "kinetic_translational", "kinetic_rotational", "contacts"]
+
+
+def write_bottom_region(run: Path):
+    """run/bottom_region.json: the crosses of the column's bottom quarter (centre at x < L0 and z <
+    H0 / 4) before the gate opened and at the end, and how far those that started there moved,
+    from the run's two state files (a restored run has neither). With memory that region stays
+    static; without, Huet et al. 2021 (Sec. V B) see it deform and overpack."""
+    before, final = run / "state_before_gate.json", run / "state_final.json"
+    if not (before.exists() and final.exists() and (run / "summary.json").exists()):
+        return
+    summary = json.loads((run / "summary.json").read_text())
+    l0, h0 = summary["L0"], summary["H0"]
+    size = summary.get("dam_break", {}).get("particle_size")
+
+    def centres(path):
+        return {p[0]: p[7] for p in json.loads(path.read_text())["particles"]}
+
+    def inside(x):
+        return x[0] < l0 and x[2] < 0.25 * h0
+
+    start, end = centres(before), centres(final)
+    moved = sorted(math.dist(x, end[i]) for i, x in start.items() if inside(x) and i in end)
+    record = {"L0": l0, "H0": h0, "before": sum(map(inside, start.values())), "final": sum(map(inside, end.values())),
+              "median_displacement": statistics.median(moved) if moved else None,
+              "mean_displacement": sum(moved) / len(moved) if moved else None,
+              "moved_more_than_a_particle": sum(d > size for d in moved) / len(moved) if moved and size else None}
+    (run / "bottom_region.json").write_text(json.dumps(record, indent=1) + "\n")
 
 
 def write_energy_series(run: Path):
@@ -332,6 +360,7 @@ def compact(fam: Family, runs_dir: Path):
         dest = fam.folder(VALIDATION) / run_dir.parent.name / run_dir.name
         dest.mkdir(parents=True, exist_ok=True)
         write_energy_series(run_dir)
+        write_bottom_region(run_dir)
         copy_present(KEPT_FILES, run_dir, dest)
         kept += 1
     print(f"{fam.paper}/{fam.name}: {kept} runs kept under {fam.folder(VALIDATION)}")

@@ -92,11 +92,34 @@ def lines(base: Path, figure: Path | None = None):
         out.append("Mean difference in its standard errors: " + "; ".join(verdicts) +
                    f" ({len(found)} pairs: a t of 4.3 is the two-sided 95 % bound for 2 degrees of freedom, 2.6 "
                    "for 5).")
-    out += frame_lines(found)
+    out += bottom_lines(found) + frame_lines(found)
     if figure is not None:
         path = plot(found, figure)
         out += ["", f"![centre of mass and mean speed with and without memory]({path.relative_to(base)})"]
     return out + [""]
+
+
+def bottom_lines(found):
+    """The column's bottom quarter (validation.write_bottom_region), with and without memory."""
+    regions = [[json.loads((f / "bottom_region.json").read_text()) if (f / "bottom_region.json").exists() else None
+                for f in (fw, fwo)] for _, _, _, fw, fwo in found]
+    regions = [(seed, a, b) for (seed, *_), (a, b) in zip(found, regions) if a and b]
+    if not regions:
+        return []
+    rows = [("crosses there at the end / before the gate", lambda r: r["final"] / r["before"], "{:.3f}"),
+            ("median displacement of those that started there (mm)", lambda r: 1000 * r["median_displacement"], "{:.2f}"),
+            ("share of them moved by more than a particle size", lambda r: r["moved_more_than_a_particle"], "{:.3f}")]
+    out = ["", "The column's bottom quarter (crosses centred at x < L0 and z < H0 / 4 before the gate, where the paper "
+           "expects a static region):", "", "| quantity | " + " | ".join(f"{seed}: with, without" for seed, _, _ in regions) +
+           " | mean difference (without - with) |", "|---|" + "---|" * (len(regions) + 1)]
+    for label, read, form in rows:
+        cells, diffs = [], []
+        for _, a, b in regions:
+            cells.append(f"{form.format(read(a))}, {form.format(read(b))}")
+            diffs.append(read(b) - read(a))
+        m, e = paired(diffs)
+        out.append(f"| {label} | " + " | ".join(cells) + f" | {m:+.3g}" + (f" ± {e:.2g} |" if math.isfinite(e) else " |"))
+    return out
 
 
 # Fig. 19's frames, in seconds after the gate's opening (its t = 0). A run that ended before a frame
