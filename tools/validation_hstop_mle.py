@@ -16,13 +16,16 @@ NAMES = ("A", "delta1", "delta2")
 
 
 def cases_of(rows):
-    """(h, theta, flowing) of each staircase row with a measured height."""
+    """(h, theta, flowing) of each staircase row with a measured height, sorted: where a ridge of
+    curves fits the outcomes almost equally well, the order of the sum in the likelihood steers the
+    minimiser along it, and the table's order (the staircase's, or the kept cases') would change the
+    report."""
     out = []
     for r in rows:
         if r.get("h") in ("", None) or not math.isfinite(float(r["h"])):
             continue
         out.append((float(r["h"]), float(r["angle"]), 0 if int(r.get("arrested") or 0) else 1))
-    return out
+    return sorted(out)
 
 
 def _nll(chute_fits, cases, A, d1, d2, log_sigma):
