@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "talus/scenario/body_insertion.h"
+#include "talus/scenario/contact_reader.h"
 
 namespace talus {
 
@@ -33,13 +34,18 @@ DamBreakSetup read_dam_break(const io::ScenarioFile& f) {
   s.collapse_min_time = f.get_or<double>("dam_break.collapse_min_time", s.collapse_min_time, io::non_negative);
   s.pixel = f.get_or<double>("dam_break.pixel", s.pixel, io::positive);
   if (f.has("dam_break.collapse_tangential")) {
-    constexpr TangentialModel kRules[] = {TangentialModel::memory, TangentialModel::memoryless,
-                                          TangentialModel::elastic_spring};
+    // Huet et al. 2021's two rules (Sec. V B) read the same contact parameters, so a column settled
+    // under one collapses under the other. The elastic spring of Weinhart et al. 2012 reads others
+    // (no clamp on the normal force, its own stiffness), which a switch mid-run would skip checking.
+    constexpr TangentialModel kRules[] = {TangentialModel::memory, TangentialModel::memoryless};
     std::vector<std::string> names;
     for (TangentialModel m : kRules) names.push_back(tangential_model_name(m));
     const std::string rule = f.get_choice("dam_break.collapse_tangential", names);
     for (TangentialModel m : kRules)
       if (rule == tangential_model_name(m)) s.collapse_tangential = m;
+    if (read_tangential_model(f) == TangentialModel::elastic_spring)
+      f.fail("dam_break.collapse_tangential", "switches between the memory and memoryless rules only; this run's "
+                                              "contacts keep the elastic_spring history (contact.tangential)");
   }
   return s;
 }
