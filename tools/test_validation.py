@@ -272,7 +272,7 @@ class Validation(unittest.TestCase):
         # Sec. V B: each seed's two collapses are paired; the mean difference carries the standard
         # error of the paired differences; a pair whose columns differ at the gate is counted apart.
         def summary(runout, before, stop="collapse_over"):
-            return {"stop_reason": stop, "H0": 0.18, "coordination_number": 7.5,
+            return {"stop_reason": stop, "H0": 0.18, "contacts": 3750, "derived": {"particles": 1000},
                     "dam_break": {"gate_open_time": 0.4, "runout_ratio": runout, "height_ratio": 3.0, "com_ratio": 3.4,
                                   "displaced_fraction": 0.7, "collapse_duration": 1.2,
                                   "before_gate": {"whole": {"contact_points": before}}}}
@@ -311,6 +311,11 @@ class Validation(unittest.TestCase):
         self.assertNotIn("seed_4", text)
         self.assertIn("| 0.60 | 0.880 | 0.820 | -0.060 ± 0.000 | 2 | 3 |", text)  # 1 - 0.2 x 0.6, 1 - 0.3 x 0.6
         self.assertIn("| 3.00 | 0.762 | 0.643 |", text)
+        self.assertIn("- the height falls faster: z_cm / z_cm(gate) 0.15 s after the gate -0.015 ± 0", text)
+        self.assertIn("0 of 3 columns without memory and 0 with memory still crept", text)
+        self.assertTrue(validation_memory.glance(self.base).startswith(
+            "- Memory against no memory (Fig. 19), 3 seed pairs of one settled column at L0 = 4 cm, without memory "
+            "minus with: the height falls faster: z_cm / z_cm(gate) 0.15 s after the gate -0.015 ± 0;"))
         self.assertIn("| crosses there at the end / before the gate | 1.000, 1.100 | 1.000, 1.100 | 1.000, 1.100 | +0.1 ± 0 |",
                       text)  # the runs' last records, at t = 1.59
         empty = Path(self.tmp.name) / "none"

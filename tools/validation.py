@@ -1272,7 +1272,7 @@ def report(_args):
     table, glance = weinhart_report(weinhart, figures)
     cases, fits = huet_report(huet, figures)
     lines += validation_summary.lines(table, TABLE1, TABLE1_BAR, glance, cases, fits, moving_columns_fits(cases),
-                                      channel_fits())
+                                      channel_fits(), validation_memory.glance(VALIDATION))
     lines += weinhart + huet
     (VALIDATION / "REPORT.md").write_text("\n".join(lines) + "\n")
     print(VALIDATION / "REPORT.md")

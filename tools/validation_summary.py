@@ -95,7 +95,7 @@ def weinhart_lines(table, paper_values, bars, glance):
     return out
 
 
-def huet_lines(cases, fits, moving_fits, channel_fits):
+def huet_lines(cases, fits, moving_fits, channel_fits, memory=None):
     out = ["**Huet et al. 2021, small systems.**", ""]
     spheres = sorted((c for c in cases if c["family"] == "spheres"), key=lambda c: c["aspect_ratio"])
     between = 0
@@ -118,6 +118,8 @@ def huet_lines(cases, fits, moving_fits, channel_fits):
             text += (f"; without a = {', '.join(f'{a:.2g}' for a in left)}, where a realisation stood, n = {n:.3g} ± "
                      f"{n_err:.2g} ({'consistent' if off < 2 else 'not consistent'})")
         out.append(text + ".")
+    if memory:
+        out.append(memory)
     thin = [c for c in cases if c["family"] in PAPER_FAMILIES and c["runs"] < REALISATIONS]
     if thin:
         out.append("- Fewer than " + f"{REALISATIONS} realisations so far: " +
@@ -125,12 +127,13 @@ def huet_lines(cases, fits, moving_fits, channel_fits):
     return out + [""]
 
 
-def lines(table, paper_values, bars, glance, cases, fits, moving_fits, channel_fits):
+def lines(table, paper_values, bars, glance, cases, fits, moving_fits, channel_fits, memory=None):
     """`glance`: {"resolution": what one staircase resolves of Table 1's curve, in a sentence;
-    "closures": validation_closures.closures of the steady flows}, either may be missing."""
+    "closures": validation_closures.closures of the steady flows}, either may be missing; `memory`:
+    the line of validation_memory.glance, or None."""
     out = ["## At a glance", ""]
     if table:
         out += weinhart_lines(table, paper_values, bars, glance)
     if cases:
-        out += huet_lines(cases, fits, moving_fits, channel_fits)
+        out += huet_lines(cases, fits, moving_fits, channel_fits, memory)
     return out
