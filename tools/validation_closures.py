@@ -266,7 +266,7 @@ def rule_ratio_lines(chute_fits, rows, paper_hstop, base: Path, fit):
             zg, zb = abs(g - 0.040) / g_se, abs(b - 0.196) / b_se
             text += (f" The fit's gamma is {zg:.1f} standard errors from Table 1's 0.040 and its beta {zb:.1f} from "
                      f"0.196: the flows differ {'by a factor more than by a shift' if zb > zg else 'by a shift more than by a factor'}.")
-    return [text + " The sensitivity checks below test the base damping convention and the time step.", ""]
+    return [text + " The sensitivity checks below test the base damping convention, the time step and the base's realisation.", ""]
 
 
 def pm(v, e, digits=4):
