@@ -16,6 +16,12 @@ from pathlib import Path
 WITH, WITHOUT = "crosses", "crosses_memoryless"
 POINT = "gate_position=0.04"
 
+
+def final_coordination(summary):
+    """summary.json's coordination_number is the column's before the gate; contacts is the last record's."""
+    return 2 * summary["contacts"] / summary["derived"]["particles"]
+
+
 # (label, how to read it from a summary.json)
 QUANTITIES = [
     ("(L_inf - L0)/L0", lambda s: s["dam_break"]["runout_ratio"]),
@@ -23,9 +29,7 @@ QUANTITIES = [
     ("centre-of-mass Delta x / x0", lambda s: s["dam_break"]["com_ratio"]),
     ("fraction of crosses displaced", lambda s: s["dam_break"]["displaced_fraction"]),
     ("collapse duration (s)", lambda s: s["dam_break"]["collapse_duration"]),
-    # summary.json's coordination_number is the column's before the gate; contacts is the last record's.
-    ("coordination at the end (2 x contact points between crosses / crosses)",
-     lambda s: 2 * s["contacts"] / s["derived"]["particles"]),
+    ("coordination at the end (2 x contact points between crosses / crosses)", final_coordination),
 ]
 
 
@@ -64,6 +68,26 @@ def paired(values):
     return m, math.sqrt(sum((v - m) ** 2 for v in values) / (n - 1) / n)
 
 
+def difference_text(diffs, form="{:+.3g}", err="{:.2g}"):
+    """The mean paired difference, with its standard error once there are two pairs."""
+    m, e = paired(diffs)
+    return form.format(m) + (" ± " + err.format(e) if math.isfinite(e) else "")
+
+
+def paired_table(items, quantities):
+    """Markdown rows of (label, read, cell format) over items (seed, a, b): each seed's two values
+    and the mean difference b - a; and (label, mean, standard error) per quantity."""
+    rows = ["| quantity | " + " | ".join(f"{seed}: with, without" for seed, _, _ in items) +
+            " | mean difference (without - with) |", "|---|" + "---|" * (len(items) + 1)]
+    stats = []
+    for label, read, form in quantities:
+        diffs = [read(b) - read(a) for _, a, b in items]
+        cells = [f"{form.format(read(a))}, {form.format(read(b))}" for _, a, b in items]
+        rows.append(f"| {label} | " + " | ".join(cells) + f" | {difference_text(diffs)} |")
+        stats.append((label, *paired(diffs)))
+    return rows, stats
+
+
 def lines(base: Path, figure: Path | None = None):
     found = pairs(base)
     head = [f"**Memory against no memory** (Sec. V B, Fig. 19). L0 = 4 cm (a about 4.6): each seed of `{WITHOUT}` "
@@ -74,21 +98,10 @@ def lines(base: Path, figure: Path | None = None):
     if not found:
         return head + ["", "No pair has finished yet.", ""]
     identical = sum(same_column(w, wo) for _, w, wo, _, _ in found)
-    rows = ["", "| quantity | " + " | ".join(f"{seed}: with, without" for seed, *_ in found) +
-            " | mean difference (without - with) |", "|---|" + "---|" * (len(found) + 1)]
-    verdicts = []
-    for label, read in QUANTITIES:
-        cells, diffs = [], []
-        for _, w, wo, _, _ in found:
-            a, b = read(w), read(wo)
-            cells.append(f"{a:.3g}, {b:.3g}")
-            diffs.append(b - a)
-        m, e = paired(diffs)
-        diff = f"{m:+.3g} ± {e:.2g}" if math.isfinite(e) else f"{m:+.3g}"
-        rows.append(f"| {label} | " + " | ".join(cells) + f" | {diff} |")
-        if math.isfinite(e) and e > 0:
-            verdicts.append(f"{label} {m / e:+.1f}")
-    out = head + rows + ["", f"{identical} of {len(found)} pairs had the same column at the gate's opening (contact "
+    rows, stats = paired_table([(seed, w, wo) for seed, w, wo, _, _ in found],
+                               [(label, read, "{:.3g}") for label, read in QUANTITIES])
+    verdicts = [f"{label} {m / e:+.1f}" for label, m, e in stats if math.isfinite(e) and e > 0]
+    out = head + [""] + rows + ["", f"{identical} of {len(found)} pairs had the same column at the gate's opening (contact "
                          "points by region and H0 equal)."]
     if verdicts:
         out.append("Mean difference in its standard errors: " + "; ".join(verdicts) +
@@ -108,20 +121,13 @@ def bottom_lines(found):
     regions = [(seed, a, b) for (seed, *_), (a, b) in zip(found, regions) if a and b]
     if not regions:
         return []
-    rows = [("crosses there at the end / before the gate", lambda r: r["final"] / r["before"], "{:.3f}"),
-            ("median displacement of those that started there (mm)", lambda r: 1000 * r["median_displacement"], "{:.2f}"),
-            ("share of them moved by more than a particle size", lambda r: r["moved_more_than_a_particle"], "{:.3f}")]
-    out = ["", "The column's bottom quarter (crosses centred at x < L0 and z < H0 / 4 before the gate, where the paper "
-           "expects a static region):", "", "| quantity | " + " | ".join(f"{seed}: with, without" for seed, _, _ in regions) +
-           " | mean difference (without - with) |", "|---|" + "---|" * (len(regions) + 1)]
-    for label, read, form in rows:
-        cells, diffs = [], []
-        for _, a, b in regions:
-            cells.append(f"{form.format(read(a))}, {form.format(read(b))}")
-            diffs.append(read(b) - read(a))
-        m, e = paired(diffs)
-        out.append(f"| {label} | " + " | ".join(cells) + f" | {m:+.3g}" + (f" ± {e:.2g} |" if math.isfinite(e) else " |"))
-    return out
+    quantities = [("crosses there at the end / before the gate", lambda r: r["final"] / r["before"], "{:.3f}"),
+                  ("median displacement of those that started there (mm)", lambda r: 1000 * r["median_displacement"],
+                   "{:.2f}"),
+                  ("share of them moved by more than a particle size", lambda r: r["moved_more_than_a_particle"],
+                   "{:.3f}")]
+    return ["", "The column's bottom quarter (crosses centred at x < L0 and z < H0 / 4 before the gate, where the paper "
+            "expects a static region):", ""] + paired_table(regions, quantities)[0]
 
 
 # Fig. 19's frames, in seconds after the gate's opening (its t = 0). A run that ended before a frame
@@ -130,7 +136,7 @@ FRAMES = [0.15, 0.30, 0.45, 0.60, 0.75, 0.90, 1.05, 3.00]
 
 
 def centre_height(folder: Path, summary):
-    """(times after the gate's opening, z_cm / z_cm at the opening) from the gravitational energy
+    """[(time after the gate's opening, z_cm / z_cm at the opening)] from the gravitational energy
     M g z_cm of energy_series.csv (the floor at z = 0); None without the file."""
     path = folder / "energy_series.csv"
     if not path.exists():
@@ -139,7 +145,7 @@ def centre_height(folder: Path, summary):
         rows = [(float(r["time"]), float(r["gravitational"])) for r in csv.DictReader(f)]
     t_gate = summary["dam_break"]["gate_open_time"]
     at_gate = interpolate(rows, t_gate)
-    return [t - t_gate for t, _ in rows if t >= t_gate], [e / at_gate for t, e in rows if t >= t_gate]
+    return [(t - t_gate, e / at_gate) for t, e in rows if t >= t_gate]
 
 
 def interpolate(rows, t):
@@ -156,17 +162,15 @@ def frame_lines(found):
     curves = [(a, b) for a, b in curves if a and b]
     if not curves:
         return []
-    speeds = [(list(zip(*read_speeds(fw, "time", "mean_speed"))), list(zip(*read_speeds(fwo, "time", "mean_speed"))))
-              for _, _, _, fw, fwo in found]
+    speeds = [(read_speeds(fw, "time", "mean_speed"), read_speeds(fwo, "time", "mean_speed")) for _, _, _, fw, fwo in found]
     out = ["", f"The centre of mass's height z_cm / z_cm(gate) (from the gravitational energy) and the mean speed at the "
            f"paper's frames (Fig. 19; {len(curves)} pairs; a run whose collapse was over before a frame is read at its "
            "end):", "", "| t after the gate (s) | z_cm with memory | without | difference (without - with) | "
            "mean speed with memory (mm/s) | without (mm/s) |", "|---|---|---|---|---|---|"]
     for frame in FRAMES:
-        a = [interpolate(list(zip(*c[0])), frame) for c in curves]
-        b = [interpolate(list(zip(*c[1])), frame) for c in curves]
-        m, e = paired([y - x for x, y in zip(a, b)])
-        diff = f"{m:+.3f} ± {e:.3f}" if math.isfinite(e) else f"{m:+.3f}"
+        a = [interpolate(with_, frame) for with_, _ in curves]
+        b = [interpolate(without, frame) for _, without in curves]
+        diff = difference_text([y - x for x, y in zip(a, b)], "{:+.3f}", "{:.3f}")
         va = [1000 * interpolate(w, frame) for w, _ in speeds]
         vb = [1000 * interpolate(wo, frame) for _, wo in speeds]
         out.append(f"| {frame:.2f} | {sum(a) / len(a):.3f} | {sum(b) / len(b):.3f} | {diff} | "
@@ -188,12 +192,11 @@ def glance(base: Path):
 def verdict_lines(found):
     """The paper's four observations of Sec. V B, each beside the paired difference that tests it."""
     def diff(read):
-        m, e = paired([read(wo, fwo) - read(w, fw) for _, w, wo, fw, fwo in found])
-        return f"{m:+.3g} ± {e:.2g}" if math.isfinite(e) else f"{m:+.3g}"
+        return difference_text([read(wo, fwo) - read(w, fw) for _, w, wo, fw, fwo in found])
 
     def early_height(summary, folder):
         curve = centre_height(folder, summary)
-        return interpolate(list(zip(*curve)), FRAMES[0]) if curve else math.nan
+        return interpolate(curve, FRAMES[0]) if curve else math.nan
 
     def bottom(summary, folder):
         path = folder / "bottom_region.json"
@@ -205,7 +208,7 @@ def verdict_lines(found):
             f"- the height falls faster: z_cm / z_cm(gate) {FRAMES[0]:.2f} s after the gate {diff(early_height)};",
             f"- the bottom deforms where it should stay static: median displacement of the bottom quarter's crosses "
             f"{diff(bottom)} mm;",
-            f"- it overpacks: coordination at the end {diff(lambda s, _: 2 * s['contacts'] / s['derived']['particles'])}; "
+            f"- it overpacks: coordination at the end {diff(lambda s, _: final_coordination(s))}; "
             f"{capped} of {len(found)} columns without memory and {capped_with} with memory still crept at the time "
             "cap (the stop test: mean speed below 0.1 mm/s);",
             f"- fewer crosses leave the top: not measured as such; the runout ratio differs by "
@@ -214,9 +217,9 @@ def verdict_lines(found):
 
 
 def read_speeds(folder: Path, x="time_over_tau", y="speed_over_sqrt_gH0"):
+    """[(x, y)] of collapse_speeds.csv."""
     with open(folder / "collapse_speeds.csv") as f:
-        rows = list(csv.DictReader(f))
-    return [float(r[x]) for r in rows], [float(r[y]) for r in rows]
+        return [(float(r[x]), float(r[y])) for r in csv.DictReader(f)]
 
 
 def plot(found, path: Path):
@@ -226,11 +229,10 @@ def plot(found, path: Path):
     fig, (height, speed) = plt.subplots(1, 2, figsize=(11, 4))
     for k, (seed, w, wo, with_, without) in enumerate(found):
         for folder, summary, colour, label in ((with_, w, "k", "with memory"), (without, wo, "tab:red", "without memory")):
-            t, v = read_speeds(folder)
-            speed.plot(t, v, color=colour, lw=1, alpha=0.8, label=label if k == 0 else None)
+            speed.plot(*zip(*read_speeds(folder)), color=colour, lw=1, alpha=0.8, label=label if k == 0 else None)
             curve = centre_height(folder, summary)
             if curve:
-                height.plot(*curve, color=colour, lw=1, alpha=0.8, label=label if k == 0 else None)
+                height.plot(*zip(*curve), color=colour, lw=1, alpha=0.8, label=label if k == 0 else None)
     for frame in FRAMES:
         height.axvline(frame, color="0.85", lw=0.8, zorder=0)
     height.set_xlabel("t after the gate's opening (s); grey: Fig. 19's frames")
