@@ -27,6 +27,7 @@ CrossBoxSetup pile_setup(const CrossPileOptions& o) {
   s.domain_hi = {1.0, 0.2, 1.0};  // room for the flow past x = 0.2 m
   s.narrow_phase_reuse = o.narrow_phase_reuse;
   s.manifold_refit = o.manifold_refit;
+  s.manifold_recycle = o.manifold_recycle;
   return s;
 }
 
@@ -94,6 +95,7 @@ void run_cross_pile(const CrossPileOptions& o, void (*metric)(const char*, doubl
     const double q = static_cast<double>(st.box_full_queries + st.box_reused);
     metric("crosspile_reuse_share", q > 0 ? st.box_reused / q : 0.0, "fraction");
     metric("crosspile_refit_share", q > 0 ? st.box_refit / q : 0.0, "fraction");
+    metric("crosspile_recycle_share", q > 0 ? st.box_recycled / q : 0.0, "fraction");
   }
   if (o.static_only) return;
   // Flowing: the x+ wall goes, the pile slumps out of the box.

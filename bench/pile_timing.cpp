@@ -64,6 +64,7 @@ void profile_pile(World& w, std::uint64_t steps, const std::string& prefix, Metr
   const double box_queries = static_cast<double>(st.box_full_queries + st.box_reused);
   m("_reuse_share", box_queries > 0 ? st.box_reused / box_queries : 0.0, "fraction");
   m("_refit_share", box_queries > 0 ? st.box_refit / box_queries : 0.0, "fraction");
+  m("_recycle_share", box_queries > 0 ? st.box_recycled / box_queries : 0.0, "fraction");
   m("_full_box_queries_per_particle_step", st.box_full_queries / ps, "count");
   const PhaseTimer& t = w.timer();
   const double narrow = st.narrow_ticks / tsc_rate, force = st.force_ticks / tsc_rate;

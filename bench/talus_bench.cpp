@@ -102,6 +102,7 @@ struct Options {
   bool reps_given = false;         ///< --reps was given (the cross pile keeps its own 8 otherwise)
   bool no_reuse = false;           ///< cross pile: contact.narrow_phase_reuse = false (A/B)
   double refit = -1;               ///< cross pile: contact.manifold_refit; negative: the default
+  double recycle = -1;             ///< cross pile: contact.manifold_recycle (m); negative: the default
   std::string shape;               ///< --only shapes: one case; empty: all three
   std::size_t shape_count = 0;     ///< bodies per shape pile; 0: 1000 (200 with --quick)
   std::uint64_t shape_steps = 0;   ///< timed steps of a shape pile; 0: 500 (100 with --quick)
@@ -113,7 +114,7 @@ void usage() {
                "                   [--crosses N] [--static-only] (the cross pile runs only with --only crosspile:\n"
                "                   it settles for minutes; --static-only skips its flowing state; --steps N,\n"
                "                   --reps N; --no-reuse turns narrow-phase reuse off, --refit F sets\n"
-               "                   contact.manifold_refit)\n"
+               "                   contact.manifold_refit, --recycle M contact.manifold_recycle)\n"
                "                   [--shape icosahedra|hexapods|tetrapods] [--shape-count N] [--steps N] (the shape\n"
                "                   piles run only with --only shapes; they settle for minutes before the first run)\n"
                "                   [--warmup N] [--reps N] [--flow-time T] [--gen-threads N]\n"
@@ -142,6 +143,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--static-only") o.static_only = true;
     else if (a == "--no-reuse") o.no_reuse = true;
     else if (a == "--refit") o.refit = std::stod(value());
+    else if (a == "--recycle") o.recycle = std::stod(value());
     else if (a == "--shape") o.shape = value();
     else if (a == "--shape-count") o.shape_count = static_cast<std::size_t>(std::stoul(value()));
     else if (a == "--steps") o.shape_steps = std::stoull(value());
@@ -156,8 +158,8 @@ Options parse(int argc, char** argv) {
     throw std::invalid_argument("--shape and --shape-count go with --only shapes");
   if (o.only != "shapes" && o.only != "crosspile" && o.shape_steps)
     throw std::invalid_argument("--steps goes with --only shapes or crosspile");
-  if (o.only != "crosspile" && (o.no_reuse || o.refit >= 0))
-    throw std::invalid_argument("--no-reuse and --refit go with --only crosspile");
+  if (o.only != "crosspile" && (o.no_reuse || o.refit >= 0 || o.recycle >= 0))
+    throw std::invalid_argument("--no-reuse, --refit and --recycle go with --only crosspile");
   if (o.only == "shapes") {
     if (!reps_set) o.reps = o.quick ? 1 : 3;
     if (o.shape_count == 0) o.shape_count = o.quick ? 200 : 1000;
@@ -356,6 +358,7 @@ int main(int argc, char** argv) {
       c.static_only = o.static_only;
       c.narrow_phase_reuse = !o.no_reuse;
       if (o.refit >= 0) c.manifold_refit = o.refit;
+      if (o.recycle >= 0) c.manifold_recycle = o.recycle;
       if (o.reps_given) c.reps = o.reps;
       if (o.shape_steps) c.steps = o.shape_steps;
       run_cross_pile(c, [](const char* name, double value, const char* unit) { metric(name, value, unit); });

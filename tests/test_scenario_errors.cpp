@@ -74,6 +74,23 @@ TEST(ScenarioErrors, NarrowPhaseReuseIsABooleanAndRefitAFraction) {
   EXPECT_EQ(load_error(replace(kValid, "friction = 0.5", "friction = 0.5\nmanifold_refit = 0.1")), "");
 }
 
+// The recycle margin is a travel in metres, for manifolds with reuse only, and not beside the refit.
+TEST(ScenarioErrors, RecycleMarginIsBoundedAndNeedsManifoldsWithReuse) {
+  auto with = [](const std::string& lines) { return replace(kValid, "friction = 0.5", "friction = 0.5\n" + lines); };
+  const std::string negative = load_error(with("manifold = true\nmanifold_recycle = -1e-6"));
+  EXPECT_EQ(negative.rfind("case.toml:18: contact.manifold_recycle: must be a travel", 0), 0u) << negative;
+  const std::string large = load_error(with("manifold = true\nmanifold_recycle = 0.01"));
+  EXPECT_EQ(large.rfind("case.toml:18: contact.manifold_recycle", 0), 0u) << large;
+  const std::string no_manifold = load_error(with("manifold_recycle = 1e-6"));
+  EXPECT_NE(no_manifold.find("contact.manifold_recycle: needs contact.manifold = true"), std::string::npos)
+      << no_manifold;
+  const std::string no_reuse = load_error(with("manifold = true\nnarrow_phase_reuse = false\nmanifold_recycle = 1e-6"));
+  EXPECT_NE(no_reuse.find("contact.manifold_recycle: needs"), std::string::npos) << no_reuse;
+  const std::string both = load_error(with("manifold = true\nmanifold_refit = 0.1\nmanifold_recycle = 1e-6"));
+  EXPECT_NE(both.find("contact.manifold_recycle: excludes contact.manifold_refit"), std::string::npos) << both;
+  EXPECT_EQ(load_error(with("manifold = true\nmanifold_recycle = 1e-6")), "");
+}
+
 // A key the reader knows but the chosen contact models do not read is said to be so, with why,
 // rather than reported as unknown.
 TEST(ScenarioErrors, KnownKeysTheModelsDoNotReadAreNamedAsSuch) {

@@ -31,6 +31,7 @@ std::unique_ptr<World> make_cross_box_world(const CrossBoxSetup& setup) {
   s.contact_manifold = setup.manifold;
   s.narrow_phase_reuse = setup.narrow_phase_reuse;
   s.manifold_refit = setup.manifold_refit;
+  s.manifold_recycle = setup.manifold_recycle;
   auto w = std::make_unique<World>(s);
   ContactParams c;  // Huet et al. 2021, Table I
   c.normal_stiffness = 4.5e5;

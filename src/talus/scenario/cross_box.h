@@ -25,6 +25,7 @@ struct CrossBoxSetup {
   bool manifold = true;          ///< up to 4 points per face contact (k/n each)
   bool narrow_phase_reuse = true;///< WorldSettings::narrow_phase_reuse
   double manifold_refit = 0;     ///< WorldSettings::manifold_refit
+  double manifold_recycle = 0;   ///< WorldSettings::manifold_recycle
 };
 
 RigidBodyType huet_cross_type(double crust = 1e-4);

@@ -304,6 +304,13 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
     ws.gjk_warm_start = f.get_or<bool>("contact.gjk_warm_start", true);
     if (!(ws.manifold_refit >= 0 && ws.manifold_refit <= 0.5))
       f.fail("contact.manifold_refit", "must be a fraction of the overlap in [0, 0.5]");
+    ws.manifold_recycle = f.get_or<double>("contact.manifold_recycle", 0.0);
+    if (!(ws.manifold_recycle >= 0 && ws.manifold_recycle <= 1e-3))
+      f.fail("contact.manifold_recycle", "must be a travel in [0, 1e-3] m");
+    if (ws.manifold_recycle > 0 && !(ws.contact_manifold && ws.narrow_phase_reuse))
+      f.fail("contact.manifold_recycle", "needs contact.manifold = true and contact.narrow_phase_reuse = true");
+    if (ws.manifold_recycle > 0 && ws.manifold_refit > 0)
+      f.fail("contact.manifold_recycle", "excludes contact.manifold_refit: set one of the two");
     ws.gravity = f.get_or<Vec3>("domain.gravity", Vec3{0, 0, -9.81});
   }
   // Also for the chute and the dam break, which build their own domains (non-periodic in z, and

@@ -21,8 +21,14 @@
 // clip would add in the meantime (a vertex coming down through the reference face) is missed,
 // with an overlap below the motion since the clip, about 2 f of the deepest. f = 0 (the
 // default) keeps reuse exact; edge-edge contacts are always exact.
+//
+// Or (`contact.manifold_recycle`, a travel in metres) a touching pair, face or edge contact,
+// keeps its points as anchors fixed in the two boxes and serves them for that travel after they
+// were computed, with no SAT and no clip: the overlap along the normal, which turns with box i,
+// follows the anchors (recycled_point). The two approximations exclude each other.
 #include "talus/collide/box_box.h"
 #include "talus/world/pair_budgets.h"
+#include "talus/world/sub_contacts.h"
 
 namespace talus {
 
@@ -44,6 +50,7 @@ struct Reuse {
   bool on;
   double refit;
   bool gjk_warm_start;  ///< WorldSettings::gjk_warm_start
+  double recycle = 0;   ///< m, WorldSettings::manifold_recycle
 };
 
 // True while the stored points of a face contact may be refit rather than clipped: the axis is
@@ -51,6 +58,46 @@ struct Reuse {
 inline bool refit_allowed(bool reuse, const PartBudget& budget, int stored_axis, double travelled) {
   return reuse && stored_axis >= 0 && stored_axis < 6 && feature_reusable(budget, stored_axis, travelled) &&
          budget.refit_allowed(travelled);
+}
+
+// True while the anchored points of a touching pair may be recycled: its stored feature is still
+// the SAT's answer and the travel since they were computed is within the recycle margin (the
+// margin shares PartBudget::refit_slack with the refit, which it excludes).
+inline bool recycle_allowed(const Reuse& reuse, const PartBudget& budget, int stored_axis, double travelled) {
+  return reuse.on && reuse.recycle > 0 && feature_reusable(budget, stored_axis, travelled) &&
+         budget.refit_allowed(travelled);
+}
+
+// A box's local coordinates of a world point; a local direction turned into the world.
+inline Vec3 in_box(const OrientedBox& box, const Vec3& world) {
+  const Vec3 d = world - box.centre;
+  return {dot(d, box.axis[0]), dot(d, box.axis[1]), dot(d, box.axis[2])};
+}
+inline Vec3 turned_with(const OrientedBox& box, const Vec3& local) {
+  return box.axis[0] * local.x + box.axis[1] * local.y + box.axis[2] * local.z;
+}
+
+// The anchors of a contact point of boxes a (body i) and b: half the overlap either side of
+// the point along the normal (from b towards a), and the normal, in the boxes' frames.
+inline PointAnchors anchors_of(const OrientedBox& a, const OrientedBox& b, const Vec3& normal, const Vec3& point,
+                               double overlap) {
+  const Vec3 half_depth = normal * (0.5 * overlap);
+  return {in_box(a, point - half_depth), in_box(b, point + half_depth),
+          {dot(normal, a.axis[0]), dot(normal, a.axis[1]), dot(normal, a.axis[2])}};
+}
+
+// A point served from its anchors as the boxes stand now. The overlap is the anchors'
+// separation along the normal, which turns with box a: an approach along the normal changes it
+// exactly, a slide along the contact plane not at all, and a turn by a small angle phi by about
+// phi times the slide it causes. The point is the anchors' midpoint.
+struct AnchoredPoint {
+  Vec3 normal, point;
+  double overlap;
+};
+inline AnchoredPoint from_anchors(const OrientedBox& a, const OrientedBox& b, const PointAnchors& k) {
+  const Vec3 deepest_i = a.centre + turned_with(a, k.deepest_i), deepest_j = b.centre + turned_with(b, k.deepest_j);
+  const Vec3 normal = turned_with(a, k.normal_in_i);
+  return {normal, (deepest_i + deepest_j) * 0.5, dot(deepest_j - deepest_i, normal)};
 }
 
 // The SAT of two touching boxes. With `reuse`, a lasting contact evaluates its stored axis alone

@@ -53,6 +53,7 @@ struct PointGeometry {
   Vec3 normal, point;
   double overlap;
   std::uint32_t feature;
+  const SubContact* recycled = nullptr;  ///< the record whose anchors gave the point (manifold_recycle)
 };
 
 // The SAT axis a box-box manifold point was made on, from its feature id (manifold.h):
@@ -88,7 +89,21 @@ OrientedBox core_box(const PlacedPart& placed, const CompositePart& part) {
 }
 
 // How two boxes' points were found.
-enum class BoxQuery { full, stored_feature, refit };
+enum class BoxQuery { full, stored_feature, refit, recycled };
+
+// Last step's points of a part pair, served from their anchors (WorldSettings::manifold_recycle);
+// points whose anchors have parted are dropped.
+int recycled_points(const OrientedBox& a, const OrientedBox& b, const SubContact* previous,
+                    const SubContact* previous_end, PointGeometry out[4]) {
+  int n = 0;
+  for (const SubContact* s = previous; s != previous_end && n < 4 && s->part_i == previous->part_i &&
+                                       s->part_j == previous->part_j;
+       ++s) {
+    const AnchoredPoint q = from_anchors(a, b, s->anchors);
+    if (q.overlap > 0) out[n++] = {q.normal, q.point, q.overlap, s->feature, s};
+  }
+  return n;
+}
 
 // Contact points of two placed convex parts: a manifold, or the single deepest point.
 // [previous, previous_end) are this part pair's points of last step (empty: none), for the warm
@@ -111,6 +126,10 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
     // memset and a memmove of its ~400 bytes per touching part pair.
     if (pa.is_box && pb.is_box) {
       const int stored_axis = previous ? sat_axis_of(previous->feature) : -1;
+      if (recycle_allowed(reuse, budget, stored_axis, motion.travelled)) {
+        *query = BoxQuery::recycled;
+        return recycled_points(pa.box, pb.box, previous, previous_end, out);
+      }
       if (refit_allowed(reuse.on, budget, stored_axis, motion.travelled)) {
         UninitializedArray<std::uint32_t, 4> ids;
         int n = 0;
@@ -137,10 +156,12 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
         if (!(sat.depth > 0)) return 0;
         const ManifoldPoint q = box_box_edge_point(pa.box, pb.box, sat);
         out[0] = {sat.normal, q.point, q.delta_n, q.feature_id};
+        if (reuse.on && reuse.recycle > 0) budget.allow_refit(motion.travelled, reuse.recycle);
         return 1;
       }
       const ContactManifold clipped = box_box_manifold(pa.box, pb.box, sat);
       if (reuse.on && reuse.refit > 0) budget.allow_refit(motion.travelled, reuse.refit * deepest(clipped));
+      if (reuse.on && reuse.recycle > 0) budget.allow_refit(motion.travelled, reuse.recycle);
       return touching_points(clipped, out);
     }
     return touching_points(
@@ -287,7 +308,8 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   gap = 0;
   constexpr bool profile = kProfile;  // the counters and clocks of the benchmark's profile, compiled out otherwise
   const std::uint64_t t_start = ticks(profile);
-  std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0, n_full = 0, n_reused = 0, n_refit = 0;
+  std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0, n_full = 0, n_reused = 0, n_refit = 0,
+                n_recycled = 0;
   const ParticleStore& p = particles_;
   thread_local CompositeShape scratch_i, scratch_j;
   const bool has_box_i = p.shape[i] != 0, has_box_j = p.shape[j] != 0;
@@ -318,7 +340,9 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   const PairMotion pair_motion{travelled, 0.5 * std::numbers::pi / std::min(p.radius[i], p.radius[j])};
   const bool had_contacts = !previous.empty();
   const bool one_point = !settings_.contact_manifold;
-  const Reuse reuse{settings_.narrow_phase_reuse, settings_.manifold_refit, settings_.gjk_warm_start};
+  const Reuse reuse{settings_.narrow_phase_reuse, settings_.manifold_refit, settings_.gjk_warm_start,
+                    settings_.manifold_recycle};
+  const bool anchored = settings_.contact_manifold && reuse.on && reuse.recycle > 0;
   const std::size_t first = contacts.size();
 
   ContactResult total;
@@ -372,6 +396,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
       if (profile && pa.is_box && pb.is_box && settings_.contact_manifold) {
         ++(query == BoxQuery::full ? n_full : n_reused);
         n_refit += query == BoxQuery::refit;
+        n_recycled += query == BoxQuery::recycled;
       }
       least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
       if (n == 0 && part_gap > 0) budget.sleep(travelled, part_gap);
@@ -391,6 +416,10 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
                                                               : stored;
         s.spring = old ? old->spring : Vec3{};
         s.normal_prev = old ? old->normal_prev : Vec3{};
+        // A recycled point keeps the anchors it came from; a computed one is anchored afresh.
+        if (anchored && pa.is_box && pb.is_box)
+          s.anchors = points[k].recycled ? points[k].recycled->anchors
+                                         : anchors_of(pa.box, pb.box, points[k].normal, points[k].point, points[k].overlap);
         apply_point<Model>(points[k], 1.0 / n, params, reduced_mass, reduced_radius, p.position[i], p.position[j], motion,
                            memory_dt, s, total);
         contacts.push_back(s);
@@ -412,6 +441,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
     st.box_full_queries += n_full;
     st.box_reused += n_reused;
     st.box_refit += n_refit;
+    st.box_recycled += n_recycled;
     st.cull_ticks += t_cull;
     st.narrow_ticks += t_narrow;
     st.force_ticks += t_force;

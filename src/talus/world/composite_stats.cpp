@@ -24,6 +24,7 @@ CompositeStats& CompositeStats::operator+=(const CompositeStats& o) {
   box_full_queries += o.box_full_queries;
   box_reused += o.box_reused;
   box_refit += o.box_refit;
+  box_recycled += o.box_recycled;
   cull_ticks += o.cull_ticks;
   narrow_ticks += o.narrow_ticks;
   force_ticks += o.force_ticks;

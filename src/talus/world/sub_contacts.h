@@ -11,6 +11,14 @@
 
 namespace talus {
 
+// A contact point between two boxes as recycled points keep it (WorldSettings::manifold_recycle,
+// box_pair_reuse.h): the deepest point of box i in box j, of box j in box i, and the normal (from
+// j towards i), in the boxes' own frames as they stood when the point was last computed. Not
+// carried over a rebuild: the part budgets that allow a recycle are cleared there.
+struct PointAnchors {
+  Vec3 deepest_i, deepest_j, normal_in_i;
+};
+
 struct SubContact {
   std::uint16_t part_i = 0, part_j = 0;  ///< part indices in each body's composite
   std::uint32_t feature = 0;             ///< manifold feature id; one point per part pair: GJK's simplex (box_simplex.h)
@@ -20,6 +28,7 @@ struct SubContact {
   Vec3 force;                            ///< N, force on i at the last step
   double overlap = 0;                    ///< m
   double share = 1;                      ///< fraction of k_n and eta_n this point carries (1/points of its manifold)
+  PointAnchors anchors;                  ///< set only with WorldSettings::manifold_recycle
 
   // The key of a manifold's point (a single point per part pair is found by its parts alone).
   bool same_key(const SubContact& o) const { return part_i == o.part_i && part_j == o.part_j && feature == o.feature; }

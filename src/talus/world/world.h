@@ -45,6 +45,14 @@ struct WorldSettings {
   // rank count (whose budgets start afresh) no longer gives the same bits, and at the overlaps
   // of stiff grains (nanometres) the margin lasts a few steps and saves little.
   double manifold_refit = 0;
+  // With reuse, a touching box pair (face or edge contact) serves its points from anchors fixed
+  // in the two boxes when they were last computed, for this travel of the two bodies (m,
+  // PlacedBodies::travel) since: each point's deepest points on the two boxes and the normal
+  // move with their boxes, so the overlap follows the approach along the normal exactly and
+  // sliding along the contact plane only to second order (the recycling of Box2D v3). A point
+  // that the features would add meanwhile (a vertex coming down) is missed, and a restart or
+  // another rank count no longer gives the same bits. Off (0) by default.
+  double manifold_recycle = 0;
   // One point per part pair: two touching box cores start GJK from last step's simplex
   // (box_simplex.h) instead of last step's normal; about half the narrow phase's time on a
   // resting column. The same distance and normal to GJK's tolerance, but where two faces lie
