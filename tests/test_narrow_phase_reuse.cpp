@@ -538,6 +538,37 @@ TEST(ManifoldRecycle, AnchoredOverlapFollowsTheFullQuery) {
   EXPECT_GT(compared, 3000);
 }
 
+// Recycling's bound: points computed at travel T with margin m are recycled while the travels
+// sum to less than T + m and the stored axis is still the budget's, never with a zero margin,
+// with reuse off, or for another axis; a pair turning past the margin computes them again.
+TEST(ManifoldRecycle, MarginBoundsTheTravelOfARecycle) {
+  const Reuse on{true, 0, true, 2e-6}, no_margin{true, 0, true, 0}, off{false, 0, true, 2e-6};
+  const double travelled = 3e-3;
+  PartBudget budget{travelled + 1e-5, 7};  // edge axis 7 holds for 10 um more
+  EXPECT_FALSE(recycle_allowed(on, budget, 7, travelled)) << "nothing to recycle before the points are computed";
+  budget.allow_refit(travelled, on.recycle);
+  EXPECT_TRUE(recycle_allowed(on, budget, 7, travelled + 1e-6));
+  EXPECT_FALSE(recycle_allowed(on, budget, 7, travelled + 2.001e-6)) << "past the margin";
+  EXPECT_FALSE(recycle_allowed(on, budget, 3, travelled + 1e-6)) << "another axis";
+  EXPECT_FALSE(recycle_allowed(no_margin, budget, 7, travelled + 1e-6));
+  EXPECT_FALSE(recycle_allowed(off, budget, 7, travelled + 1e-6));
+  // A pair turning steadily by a tenth of the margin a step: recycled for nine steps in ten.
+  int recycled = 0, computed = 0;
+  PartBudget turning{1.0, 7};
+  double t = 0;
+  for (int step = 0; step < 100; ++step, t += 2e-7) {
+    if (recycle_allowed(on, turning, 7, t)) {
+      ++recycled;
+    } else {
+      ++computed;
+      turning.allow_refit(t, on.recycle);
+    }
+  }
+  std::printf("turning pair: %d steps recycled, %d computed\n", recycled, computed);
+  EXPECT_GE(computed, 10);
+  EXPECT_LE(computed, 11);
+}
+
 // A cube at rest on a slab under gravity tilted by 10 degrees, its points recycled for 1 um of
 // travel (its drift is picometres, so nearly every step is recycled): it sticks as without.
 TEST(ManifoldRecycle, RestingCubeStaysStuck) {
