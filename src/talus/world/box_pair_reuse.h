@@ -25,7 +25,7 @@
 // Or (`contact.manifold_recycle`, a travel in metres) a touching pair, face or edge contact,
 // keeps its points as anchors fixed in the two boxes and serves them for that travel after they
 // were computed, with no SAT and no clip: the overlap along the normal, which turns with box i,
-// follows the anchors (recycled_point). The two approximations exclude each other.
+// follows the anchors (from_anchors). The two approximations exclude each other.
 #include "talus/collide/box_box.h"
 #include "talus/world/pair_budgets.h"
 #include "talus/world/sub_contacts.h"

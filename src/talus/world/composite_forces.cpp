@@ -160,8 +160,9 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
         return 1;
       }
       const ContactManifold clipped = box_box_manifold(pa.box, pb.box, sat);
-      if (reuse.on && reuse.refit > 0) budget.allow_refit(motion.travelled, reuse.refit * deepest(clipped));
-      if (reuse.on && reuse.recycle > 0) budget.allow_refit(motion.travelled, reuse.recycle);
+      // The approximation's margin (at most one is on): a travel, or a fraction of the overlap.
+      if (reuse.on && (reuse.refit > 0 || reuse.recycle > 0))
+        budget.allow_refit(motion.travelled, reuse.recycle > 0 ? reuse.recycle : reuse.refit * deepest(clipped));
       return touching_points(clipped, out);
     }
     return touching_points(
