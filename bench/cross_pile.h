@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "talus/world/world.h"
+
 namespace talus::bench {
 
 struct CrossPileOptions {
@@ -15,7 +17,7 @@ struct CrossPileOptions {
   bool static_only = false;        ///< skip the flowing state (quick comparisons)
   bool narrow_phase_reuse = true;  ///< WorldSettings::narrow_phase_reuse (off: the A/B reference)
   double manifold_refit = 0;       ///< WorldSettings::manifold_refit (0: clip every step)
-  double manifold_recycle = 0;     ///< WorldSettings::manifold_recycle (0: no recycled points)
+  double manifold_recycle = kDefaultManifoldRecycle;  ///< WorldSettings::manifold_recycle (0: no recycled points)
   double settle_speed = 3e-2;      ///< m/s: settled below this largest speed (surface crosses creep at 1-3 cm/s)
   double settle_time_limit = 1.5;  ///< s of simulated time
   std::filesystem::path cache;     ///< directory of the cached settled pile

@@ -114,7 +114,8 @@ void usage() {
                "                   [--crosses N] [--static-only] (the cross pile runs only with --only crosspile:\n"
                "                   it settles for minutes; --static-only skips its flowing state; --steps N,\n"
                "                   --reps N; --no-reuse turns narrow-phase reuse off, --refit F sets\n"
-               "                   contact.manifold_refit, --recycle M contact.manifold_recycle)\n"
+               "                   contact.manifold_refit, --recycle M contact.manifold_recycle,\n"
+               "                   1e-5 m unless --no-reuse or --refit; 0: every point computed)\n"
                "                   [--shape icosahedra|hexapods|tetrapods] [--shape-count N] [--steps N] (the shape\n"
                "                   piles run only with --only shapes; they settle for minutes before the first run)\n"
                "                   [--warmup N] [--reps N] [--flow-time T] [--gen-threads N]\n"
@@ -358,6 +359,8 @@ int main(int argc, char** argv) {
       c.static_only = o.static_only;
       c.narrow_phase_reuse = !o.no_reuse;
       if (o.refit >= 0) c.manifold_refit = o.refit;
+      // As a scenario: recycled points by default, none without reuse or with the refit.
+      if (o.no_reuse || o.refit > 0) c.manifold_recycle = 0;
       if (o.recycle >= 0) c.manifold_recycle = o.recycle;
       if (o.reps_given) c.reps = o.reps;
       if (o.shape_steps) c.steps = o.shape_steps;

@@ -98,6 +98,7 @@ thickness = 0.003
 [contact]
 model = "memory"
 manifold = true
+manifold_recycle = 0   # recycled points restart afresh (their budgets are not saved): not the same bits
 normal_stiffness = 5e4
 normal_restitution = 0.3
 tangential_stiffness = 300.0

@@ -5,6 +5,7 @@
 
 #include "talus/io/input_error.h"
 #include "talus/scenario/scenario.h"
+#include "talus/world/world.h"
 
 namespace talus {
 namespace {
@@ -89,6 +90,22 @@ TEST(ScenarioErrors, RecycleMarginIsBoundedAndNeedsManifoldsWithReuse) {
   const std::string both = load_error(with("manifold = true\nmanifold_refit = 0.1\nmanifold_recycle = 1e-6"));
   EXPECT_NE(both.find("contact.manifold_recycle: excludes contact.manifold_refit"), std::string::npos) << both;
   EXPECT_EQ(load_error(with("manifold = true\nmanifold_recycle = 1e-6")), "");
+}
+
+// Manifold contacts with reuse recycle their points for 10 um unless told otherwise; without
+// manifolds, without reuse or with the refit they do not, and no error is raised for a default.
+TEST(ScenarioDefaults, RecycleMarginFollowsTheManifoldAndReuse) {
+  auto recycle = [](const std::string& lines) {
+    io::ScenarioFile f = io::ScenarioFile::from_string(replace(kValid, "friction = 0.5", "friction = 0.5\n" + lines),
+                                                       "case.toml");
+    return load_scenario(f).world->settings().manifold_recycle;
+  };
+  EXPECT_EQ(recycle("manifold = true"), kDefaultManifoldRecycle);
+  EXPECT_EQ(recycle("manifold = true\nmanifold_recycle = 0"), 0.0);
+  EXPECT_EQ(recycle("manifold = true\nmanifold_recycle = 2e-6"), 2e-6);
+  EXPECT_EQ(recycle(""), 0.0);
+  EXPECT_EQ(recycle("manifold = true\nnarrow_phase_reuse = false"), 0.0);
+  EXPECT_EQ(recycle("manifold = true\nmanifold_refit = 0.1"), 0.0);
 }
 
 // A key the reader knows but the chosen contact models do not read is said to be so, with why,

@@ -18,6 +18,9 @@ def model_of(sets):
     warm = ""  # GJK's start matters to the one-point model only; from last step's simplex by default
     if points == "one":
         warm = ", GJK started cold" if "contact.gjk_warm_start=false" in sets else ", GJK from last step's simplex"
+    recycled = next((s.split("=")[1] for s in sets if s.startswith("contact.manifold_recycle=")), "0")
+    if points != "one" and float(recycled) > 0:
+        warm = f", recycled for {float(recycled) * 1e6:g} um"
     return f"{points}{memory}{warm}", gate
 
 

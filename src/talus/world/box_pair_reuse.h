@@ -100,21 +100,36 @@ inline AnchoredPoint from_anchors(const OrientedBox& a, const OrientedBox& b, co
   return {normal, (deepest_i + deepest_j) * 0.5, dot(deepest_j - deepest_i, normal)};
 }
 
+// Where a box pair's SAT answer came from.
+enum class SatSource {
+  stored_feature,  ///< a touching pair's stored axis, within its reserve
+  apart_axis,      ///< the axis that separated the pair last time, which still does
+  full,            ///< the 15-axis search
+};
+
 // The SAT of two touching boxes. With `reuse`, a lasting contact evaluates its stored axis alone
-// while feature_reusable says it must still win (*full_query = false); otherwise the full test
-// runs, warm-started from that axis, and (with `reuse`) renews the reserve.
+// while feature_reusable says it must still win; otherwise the full test runs, warm-started from
+// that axis, and (with `reuse`) renews the reserve.
 inline BoxBoxSat lasting_box_sat(const OrientedBox& a, const OrientedBox& b, int stored_axis, const PairMotion& motion,
-                                 bool reuse, PartBudget& budget, bool* full_query) {
+                                 bool reuse, PartBudget& budget, SatSource* source) {
   BoxBoxSat sat;
-  *full_query = false;
+  *source = SatSource::stored_feature;
   if (reuse && feature_reusable(budget, stored_axis, motion.travelled) && box_box_sat_on_axis(a, b, stored_axis, sat))
     return sat;
-  *full_query = true;
+  // Woken after a gap: the axis that showed it usually still does (any axis's separation bounds
+  // the distance from below); a pair it no longer separates gets the full query, unwarmed.
+  if (const int apart_axis = budget.separating_axis();
+      reuse && stored_axis < 0 && apart_axis >= 0 && box_box_sat_on_axis(a, b, apart_axis, sat) && sat.separated) {
+    budget.sleep(motion.travelled, 0.0, apart_axis);  // the caller extends it by the gap
+    *source = SatSource::apart_axis;
+    return sat;
+  }
+  *source = SatSource::full;
   double reserve = 0;
   sat = reuse ? box_box_sat_with_reserve(a, b, stored_axis, motion.turn_per_travel, &reserve)
               : box_box_sat(a, b, stored_axis);
   if (sat.separated)
-    budget.sleep(motion.travelled, 0.0);  // the caller extends it by the gap
+    budget.sleep(motion.travelled, 0.0, reuse ? sat.axis : -1);  // the caller extends it by the gap
   else if (reuse)
     budget = {motion.travelled + reserve, sat.axis};
   else

@@ -89,7 +89,7 @@ OrientedBox core_box(const PlacedPart& placed, const CompositePart& part) {
 }
 
 // How two boxes' points were found.
-enum class BoxQuery { full, stored_feature, refit, recycled };
+enum class BoxQuery { full, stored_feature, refit, recycled, apart_axis };
 
 // Last step's points of a part pair, served from their anchors (WorldSettings::manifold_recycle);
 // points whose anchors have parted are dropped.
@@ -143,9 +143,10 @@ int part_points(const CompositePart& a, const PlacedPart& pa, const Quat& body_a
           return touching_points(refit, out);
         }
       }
-      bool full_query = false;
-      const BoxBoxSat sat = lasting_box_sat(pa.box, pb.box, stored_axis, motion, reuse.on, budget, &full_query);
-      if (full_query) *query = BoxQuery::full;
+      SatSource source = SatSource::stored_feature;
+      const BoxBoxSat sat = lasting_box_sat(pa.box, pb.box, stored_axis, motion, reuse.on, budget, &source);
+      if (source == SatSource::full) *query = BoxQuery::full;
+      if (source == SatSource::apart_axis) *query = BoxQuery::apart_axis;
       if (sat.separated) {
         *gap = -sat.depth;
         return 0;
@@ -310,7 +311,7 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
   constexpr bool profile = kProfile;  // the counters and clocks of the benchmark's profile, compiled out otherwise
   const std::uint64_t t_start = ticks(profile);
   std::uint64_t t_cull = 0, t_narrow = 0, t_force = 0, n_parts = 0, n_narrow = 0, n_points = 0, n_full = 0, n_reused = 0, n_refit = 0,
-                n_recycled = 0;
+                n_recycled = 0, n_apart_axis = 0, n_touching = 0;
   const ParticleStore& p = particles_;
   thread_local CompositeShape scratch_i, scratch_j;
   const bool has_box_i = p.shape[i] != 0, has_box_j = p.shape[j] != 0;
@@ -395,12 +396,14 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
                                 reuse, stored, previous.data() + previous.size(), pair_motion, budget, points.data(),
                                 &part_gap, &query);
       if (profile && pa.is_box && pb.is_box && settings_.contact_manifold) {
-        ++(query == BoxQuery::full ? n_full : n_reused);
+        if (query == BoxQuery::apart_axis) ++n_apart_axis;
+        else ++(query == BoxQuery::full ? n_full : n_reused);
         n_refit += query == BoxQuery::refit;
         n_recycled += query == BoxQuery::recycled;
+        n_touching += n > 0;
       }
       least_gap = std::min(least_gap, n == 0 ? part_gap : 0.0);
-      if (n == 0 && part_gap > 0) budget.sleep(travelled, part_gap);
+      if (n == 0 && part_gap > 0) budget.sleep(travelled, part_gap, budget.separating_axis());
       const std::uint64_t t2 = ticks(profile);
       t_narrow += t2 - t1;
       for (int k = 0; k < n; ++k) {
@@ -412,7 +415,9 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
         s.part_j = part_b;
         s.feature = points[k].feature;
         // One point per part pair: its feature is GJK's simplex, which moves; the pair is the key.
+        // A recycled point is its own record of last step.
         const SubContact* old = !had_contacts                   ? nullptr
+                                : points[k].recycled         ? points[k].recycled
                                 : settings_.contact_manifold ? find_previous(previous, s)
                                                               : stored;
         s.spring = old ? old->spring : Vec3{};
@@ -443,6 +448,8 @@ ContactResult World::composite_pair(std::size_t i, std::size_t j, std::span<cons
     st.box_reused += n_reused;
     st.box_refit += n_refit;
     st.box_recycled += n_recycled;
+    st.box_apart_axis += n_apart_axis;
+    st.box_touching += n_touching;
     st.cull_ticks += t_cull;
     st.narrow_ticks += t_narrow;
     st.force_ticks += t_force;

@@ -16,6 +16,8 @@ struct CompositeStats {
   std::uint64_t box_reused = 0;        ///< ... served from their stored feature (box_pair_reuse.h)
   std::uint64_t box_refit = 0;         ///< ... of which refit from their stored points, without a clip
   std::uint64_t box_recycled = 0;      ///< ... of which recycled from their anchors (manifold_recycle)
+  std::uint64_t box_apart_axis = 0;    ///< box part pairs kept apart by the axis that last separated them
+  std::uint64_t box_touching = 0;      ///< box part pairs found touching (by any of the above)
   std::uint64_t cull_ticks = 0;    ///< time stamp counter ticks in part frames + capsule culls
   std::uint64_t narrow_ticks = 0;  ///< ... in the narrow phase (SAT, clipping, GJK)
   std::uint64_t force_ticks = 0;   ///< ... in the contact law and memory look-ups

@@ -22,7 +22,10 @@ namespace talus {
 // A pair of convex parts is either apart or touching, so one bound serves both budgets: with
 // axis < 0 the pair sleeps while the two bodies' travels sum to less than `until`; with axis >= 0
 // the parts touched and, being boxes, their SAT axis stays the SAT's answer until then
-// (box_box_axis_reserve). One 16-byte record per part pair: a cross pair's four share a line.
+// (box_box_axis_reserve). Boxes found apart by the SAT keep the axis that separated them, as
+// axis = -2 - k: when they wake, that one axis usually still separates them, and the 15-axis
+// search is skipped (near pairs of crossing arms are mostly apart along an edge axis, the
+// search's last). One 16-byte record per part pair: a cross pair's four share a line.
 // A touching pair's stored points may also be refit from their features, without the clip
 // (box_pair_reuse.h), while the travels sum to less than until - refit_slack: a float in the
 // record's padding, rounded up, so the bound errs towards clipping again.
@@ -32,10 +35,12 @@ struct PartBudget {
   float refit_slack = std::numeric_limits<float>::infinity();  ///< m; infinite: no refit
 
   bool asleep(double travelled) const { return axis < 0 && travelled < until; }
-  void sleep(double travelled, double gap) {
-    axis = -1;
+  // Apart by at least `gap`; `separating_axis` (0-14) is the box SAT axis that showed it, if any.
+  void sleep(double travelled, double gap, int separating_axis = -1) {
+    axis = -2 - separating_axis;
     until = travelled + gap;
   }
+  int separating_axis() const { return axis <= -2 ? -2 - axis : -1; }
   bool refit_allowed(double travelled) const { return travelled < until - static_cast<double>(refit_slack); }
   // Points clipped at `travelled` may be refit until the travels have grown by `margin` more
   // (and never past the axis' own bound).
