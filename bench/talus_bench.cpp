@@ -359,9 +359,9 @@ int main(int argc, char** argv) {
       c.static_only = o.static_only;
       c.narrow_phase_reuse = !o.no_reuse;
       if (o.refit >= 0) c.manifold_refit = o.refit;
-      // As a scenario: recycled points by default, none without reuse or with the refit.
-      if (o.no_reuse || o.refit > 0) c.manifold_recycle = 0;
-      if (o.recycle >= 0) c.manifold_recycle = o.recycle;
+      // As a scenario (the pile always has manifolds).
+      c.manifold_recycle =
+          o.recycle >= 0 ? o.recycle : default_manifold_recycle(true, c.narrow_phase_reuse, c.manifold_refit);
       if (o.reps_given) c.reps = o.reps;
       if (o.shape_steps) c.steps = o.shape_steps;
       run_cross_pile(c, [](const char* name, double value, const char* unit) { metric(name, value, unit); });

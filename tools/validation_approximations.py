@@ -36,6 +36,31 @@ def difference(runs, ref_runs, name):
     return ma - mb, err
 
 
+# (approximated, reference, what): one realisation each, so the difference has no scatter of its own
+SINGLE_COLUMNS = [
+    ("crosses_large_recycle", "crosses_large", "the 12,000-cross column (Fig. 14) with recycled points"),
+]
+
+
+def single_column_lines(runs_by_family):
+    """Markdown lines: one column run both ways, its observables side by side. The scatter
+    between realisations is that of the small columns' pairs above, relative to their means,
+    at best: a larger column averages over more crosses."""
+    out = []
+    for family, reference, what in SINGLE_COLUMNS:
+        runs, ref = runs_by_family.get(family, []), runs_by_family.get(reference, [])
+        if len(runs) != 1 or len(ref) != 1 or runs[0]["L0"] != ref[0]["L0"]:
+            continue
+        a, b = observables(runs[0]), observables(ref[0])
+        cells = [f"{name} {a[name]:.3g} against {b[name]:.3g} ({100 * (a[name] / b[name] - 1):+.1f} %)"
+                 for name in a if a[name] is not None and b[name]]
+        regimes = f"{runs[0].get('regime', '')} against {ref[0].get('regime', '')}"
+        out.append(f"- {what}, L0 = {runs[0]['L0']:g} m, one run of `{family}` against one of `{reference}`: "
+                   + "; ".join(cells) + f". Regimes: {regimes}. Steps from the pour to rest: {runs[0]['steps']:,} "
+                   f"against {ref[0]['steps']:,}.")
+    return out
+
+
 def lines(runs_by_family):
     """Markdown lines: per pair and common gate position, the differences of the observables
     with their combined standard errors, and the regimes."""
@@ -57,6 +82,7 @@ def lines(runs_by_family):
             out.append(f"- {what}, L0 = {gate:g} m, `{family}` ({len(at)} runs) minus `{reference}` "
                        f"({len(ref_at)} runs): " + "; ".join(cells) + f". Regimes: {regimes(at)} against "
                        f"{regimes(ref_at)}.")
+    out += single_column_lines(runs_by_family)
     if out:
         out = ["", "**Approximations against every contact computed.** Each approximation's dam breaks minus the "
                "same columns' with every contact computed (mean ± combined standard error):", ""] + out + [""]

@@ -306,8 +306,8 @@ Scenario load_scenario(ScenarioFile& f, const ScenarioLimits& limits) {
       f.fail("contact.manifold_refit", "must be a fraction of the overlap in [0, 0.5]");
     // Recycled points by default wherever they can be had: the dam-break ensembles gave the same
     // regimes, runouts and heights within their scatter (validation/REPORT.md).
-    const bool recyclable = ws.contact_manifold && ws.narrow_phase_reuse && ws.manifold_refit == 0;
-    ws.manifold_recycle = f.get_or<double>("contact.manifold_recycle", recyclable ? kDefaultManifoldRecycle : 0.0);
+    ws.manifold_recycle = f.get_or<double>(
+        "contact.manifold_recycle", default_manifold_recycle(ws.contact_manifold, ws.narrow_phase_reuse, ws.manifold_refit));
     if (!(ws.manifold_recycle >= 0 && ws.manifold_recycle <= 1e-3))
       f.fail("contact.manifold_recycle", "must be a travel in [0, 1e-3] m");
     if (ws.manifold_recycle > 0 && !(ws.contact_manifold && ws.narrow_phase_reuse))

@@ -28,6 +28,12 @@ namespace talus {
 // micrometres of travel recycle about nine part pairs in ten in a resting or flowing cross pile.
 inline constexpr double kDefaultManifoldRecycle = 1e-5;
 
+// m: the margin a scenario gets unless it names one. Recycling needs the manifold and reuse, and
+// a refit already moves the points each step, so it gets none.
+inline constexpr double default_manifold_recycle(bool manifold, bool narrow_phase_reuse, double manifold_refit) {
+  return manifold && narrow_phase_reuse && manifold_refit == 0 ? kDefaultManifoldRecycle : 0.0;
+}
+
 struct WorldSettings {
   Domain domain;
   Vec3 gravity{0, 0, -9.81};              ///< m/s^2; a tilted chute is tilted gravity
