@@ -35,12 +35,10 @@ inline bool isotropic(const Vec3& inv_i) { return inv_i.x == inv_i.y && inv_i.y 
   }
 }
 
-// An anisotropic body's half kick of its spin, h I^-1 tau at fixed orientation (L += h tau; the
-// gyroscopic term is in the drift's free flow). Returned rounded for the caller to add: two half
-// kicks on one force and orientation add it twice, with the bits of two separate kicks.
-[[gnu::noinline]] Vec3 spin_kick(const ParticleStore& p, std::size_t i, double h) {
+// L += h tau at fixed orientation for an anisotropic body; the gyroscopic term is in the drift's free flow.
+[[gnu::noinline]] void kick_anisotropic(ParticleStore& p, std::size_t i, double h) {
   const Quat& q = p.orientation[i];
-  return h * q.rotate(hadamard(p.inv_inertia[i], q.rotate_inverse(p.torque[i])));
+  p.angular_velocity[i] += h * q.rotate(hadamard(p.inv_inertia[i], q.rotate_inverse(p.torque[i])));
 }
 
 // a + s b rounded the same way wherever it is written: the compiler may fuse a * and a + or
@@ -81,20 +79,15 @@ template <int kKicks>
   return v;
 }
 
-// `kKicks` half kicks of one mobile particle on the same force: v += h (F/m + g), omega += h I^-1 tau.
-template <int kKicks>
-[[gnu::always_inline]] inline void kick_mobile(ParticleStore& p, std::size_t i, double inv_m, double h,
-                                               const Vec3& gravity) {
+// One mobile particle's half kick: v += h (F/m + g), omega += h I^-1 tau.
+[[gnu::always_inline]] inline void kick_one(ParticleStore& p, std::size_t i, double inv_m, double h,
+                                            const Vec3& gravity) {
+  p.velocity[i] += h * (inv_m * p.force[i] + gravity);
   const Vec3 inv_i = p.inv_inertia[i];
-  const bool anisotropic = !isotropic(inv_i);
-  const Vec3 spin = anisotropic ? spin_kick(p, i, h) : Vec3{};
-  for (int k = 0; k < kKicks; ++k) {
-    p.velocity[i] += h * (inv_m * p.force[i] + gravity);
-    if (anisotropic) {
-      p.angular_velocity[i] += spin;
-    } else {
-      p.angular_velocity[i] += (h * inv_i.x) * p.torque[i];
-    }
+  if (isotropic(inv_i)) {
+    p.angular_velocity[i] += (h * inv_i.x) * p.torque[i];
+  } else {
+    kick_anisotropic(p, i, h);
   }
 }
 
@@ -117,7 +110,7 @@ void kick(ParticleStore& p, double h, const Vec3& gravity, std::size_t cost) {
     if (plain_sphere(p, i, inv_i)) {
       kick_sphere<1>(p, i, inv_m, inv_i, h, gravity);
     } else {
-      kick_mobile<1>(p, i, inv_m, h, gravity);
+      kick_one(p, i, inv_m, h, gravity);
     }
   }
 }
@@ -151,7 +144,7 @@ template <int kKicks, bool kDrift>
         d2 = norm2(x - at_build[i]);
       }
     } else {
-      kick_mobile<kKicks>(p, i, inv_m, h, gravity);
+      for (int k = 0; k < kKicks; ++k) kick_one(p, i, inv_m, h, gravity);
       if constexpr (kDrift) d2 = drift_one(p, i, dt, at_build[i]);
     }
   }
