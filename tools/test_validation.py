@@ -24,6 +24,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import validation  # noqa: E402
+import validation_approximations  # noqa: E402
 import validation_centre_of_mass  # noqa: E402
 import validation_closures  # noqa: E402
 import validation_hstop_mle  # noqa: E402
@@ -267,6 +268,25 @@ class Validation(unittest.TestCase):
         self.assertNotIn("| 0.04 |", text)  # only the two widest columns
         self.assertNotIn("spheres", text.split("Stable runs")[1])
         self.assertIn("Stable runs among these columns: crosses 1 of 3; crosses_manifold 0 of 1.", text)
+
+    def test_approximations_against_their_exact_runs(self):
+        # Three runs each way at one gate: the difference of the means and its combined standard
+        # error; one run each way of the large column: the two values and their relative difference.
+        def run(l0, runout, height=2.0, coordination=8.0, steps=1000):
+            return {"L0": l0, "regime": "collapsed", "coordination_number": coordination, "steps": steps,
+                    "dam_break": {"runout_ratio": runout, "height_ratio": height}}
+        runs = {"crosses_manifold_recycle": [run(0.065, x) for x in (1.0, 1.2, 1.4)],
+                "crosses_manifold": [run(0.065, x) for x in (0.9, 1.0, 1.1)],
+                "crosses_large_recycle": [run(0.167, 3.3, steps=900)],
+                "crosses_large": [run(0.167, 3.0, steps=1000)]}
+        text = "\n".join(validation_approximations.lines(runs))
+        # 1.2 - 1.0 = 0.2; standard errors 0.2/sqrt(3) and 0.1/sqrt(3): combined 0.129, 1.5 of them
+        self.assertIn("runout ratio (L_inf - L0)/L0 +0.2 ± 0.13 (1.5 combined standard errors)", text)
+        self.assertIn("one run of `crosses_large_recycle` against one of `crosses_large`: runout ratio "
+                      "(L_inf - L0)/L0 3.3 against 3 (+10.0 %)", text)
+        self.assertIn("Steps from the pour to rest: 900 against 1,000.", text)
+        runs["crosses_large"].append(run(0.167, 3.1))  # two reference runs: no single pair to set side by side
+        self.assertNotIn("crosses_large_recycle", "\n".join(validation_approximations.lines(runs)))
 
     def test_memory_pairs_compare_one_column_under_two_laws(self):
         # Sec. V B: each seed's two collapses are paired; the mean difference carries the standard
