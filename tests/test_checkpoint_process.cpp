@@ -155,5 +155,30 @@ TEST(CheckpointProcess, RestartIntoANewFolderWritesItsVtkSeries) {
   fs::remove_all(dir);
 }
 
+// A finished chute extended with a later end time and averaging window (how a flow map's cases
+// are run on to t = 2000) averages over its own window only, as the uninterrupted run does.
+TEST(CheckpointProcess, ExtendedChuteAveragesOnlyItsNewWindow) {
+  const fs::path dir = testing::test_folder();
+  const auto chute = [&](const std::string& end, const std::string& start) {
+    return with_end_time(testing::kChute, end) + "[chute.coarse_graining]\nstart = " + start + "\n";
+  };
+  std::ofstream(dir / "short.toml") << chute("3.0", "2.0");
+  std::ofstream(dir / "long.toml") << chute("6.0", "5.0");
+  const auto run = [&](std::vector<std::string> args) { ASSERT_EQ(wait_for(spawn_talus(args)), 0); };
+  run({"run", (dir / "long.toml").string(), "--out", (dir / "ref").string(), "--quiet"});
+  run({"run", (dir / "short.toml").string(), "--out", (dir / "short").string(), "--quiet"});
+  run({"run", (dir / "long.toml").string(), "--restart", CheckpointSeries::latest(dir / "short").string(), "--out",
+       (dir / "extended").string(), "--quiet"});
+
+  const nlohmann::json ref = nlohmann::json::parse(slurp(dir / "ref" / "summary.json"));
+  const nlohmann::json ext = nlohmann::json::parse(slurp(dir / "extended" / "summary.json"));
+  EXPECT_EQ(ext.at("chute").at("averaging_window"), ref.at("chute").at("averaging_window"));
+  EXPECT_GE(ext.at("chute").at("averaging_window").at(0).get<double>(), 5.0 - 1e-9);
+  for (const char* key : {"h", "mean_velocity", "froude", "mu_macro", "K"}) EXPECT_EQ(ext.at(key), ref.at(key)) << key;
+  EXPECT_EQ(slurp(dir / "extended" / "chute_profile.csv"), slurp(dir / "ref" / "chute_profile.csv"));
+  EXPECT_EQ(slurp(dir / "extended" / "chute_series.csv"), slurp(dir / "ref" / "chute_series.csv"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace talus

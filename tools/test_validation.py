@@ -539,6 +539,31 @@ class Validation(unittest.TestCase):
         self.assertTrue(figure.exists())
         self.assertTrue(any(line.startswith("| 20 | 24° | steady |") for line in lines))
 
+    def test_fits_take_a_case_from_its_long_run(self):
+        # Three flows on Table 1's rule exactly; the one also run to t = 2000 has there the F of a
+        # rule with beta 10 % higher. The fit through the map with the long run replacing its case
+        # goes through that case's t = 2000 value, not its t = 500 one.
+        t1 = validation.TABLE1
+        hs = {k: t1[k] for k in ("A", "delta1", "delta2")}
+        runs = []
+        for H, theta in ((10, 24), (20, 26), (30, 28)):
+            F = t1["beta"] * H / chute_fits.hstop35(theta, **hs) - t1["gamma"]
+            runs.append({"lambda": 1, "H": H, "angle": theta, "flow_state": "steady", "h": H, "froude": float(F),
+                         "K": 0.9, "alpha": 1.2, "bulk_volume_fraction": 0.58})
+        long_run = dict(runs[2], froude=1.1 * t1["beta"] * 30 / float(chute_fits.hstop35(28, **hs)) - t1["gamma"])
+        flows = validation_closures.with_long_runs(runs, [long_run])
+        self.assertEqual([r["study"] for r in flows], ["flowmap", "flowmap", "flowmap_long"])
+        self.assertEqual(flows[2]["froude"], long_run["froude"])
+        short = validation_closures.flow_rule(chute_fits, runs, hs)
+        long = validation_closures.flow_rule(chute_fits, flows, hs)
+        self.assertAlmostEqual(short["params"]["beta"], t1["beta"], places=6)
+        self.assertGreater(long["params"]["beta"], t1["beta"] * 1.05)
+        (self.base / "weinhart2012").mkdir(parents=True, exist_ok=True)
+        lines, fits, _ = validation_closures.section(chute_fits, runs, [long_run], None, False, hs, self.base)
+        self.assertAlmostEqual(fits["paper_hstop"]["params"]["beta"], long["params"]["beta"])
+        self.assertTrue(any("where flowmap_long has one (H = 30 at 28°)" in line for line in lines))
+        self.assertTrue(any("(H = 30, 28°, h / h_stop = 16.92, t = 2000)" in line for line in lines), lines)
+
     def test_drift_across_the_averaging_window(self):
         # A flow still speeding up by 0.03 per 100 time units under block noise of 0.01 is found
         # drifting (its slope within four standard errors of the truth, more than two from zero);

@@ -203,10 +203,13 @@ class ChuteStudy:
     """A chute study of Weinhart et al. 2012 run by `python3 -m talus hstop` or `flowmap` (which reuse
     finished cases and resume cut-off ones from their checkpoints)."""
 
-    def __init__(self, name, command, options, tables, scenario="examples/chute.toml", job=None):
+    def __init__(self, name, command, options, tables, scenario="examples/chute.toml", job=None, continue_from=None):
         self.paper, self.name, self.command, self.options, self.tables = "weinhart2012", name, command, options, tables
         self.scenario = scenario
         self.job = job or name  # names its Slurm array: two studies may share a folder
+        # A shorter study whose finished cases this one goes on from (flowmap --continue-from);
+        # a case not finished there runs from the start.
+        self.continue_from = continue_from
 
     def folder(self, base):
         return base / self.paper / self.name
@@ -217,7 +220,9 @@ class ChuteStudy:
 # 100 time units as the paper. The map runs to t = 500, not the paper's 2000 (a quarter of some 27
 # core-hours); flowmap_long runs two of its cases to t = 2000, and the one whose F drifted most
 # within its window (H = 30 at 26 deg), and the report sets the Froude numbers of both lengths
-# side by side, which is what licenses the shorter runs.
+# side by side, which is what licenses the shorter runs. The 28 deg flows still accelerate at
+# t = 500, so flowmap_long runs them on from the map's final states to t = 2000, and the flow
+# rule takes the long run of a case where there is one.
 CHUTE_STUDIES = [
     ChuteStudy("hstop", "hstop", ["--lambda", "1"], ["hstop_runs.csv", "hstop_intervals.csv"]),
     ChuteStudy("flowmap", "flowmap", ["--lambda", "1", "--heights", "10,20,30,40", "--angles", "22,24,26,28",
@@ -226,6 +231,9 @@ CHUTE_STUDIES = [
                                            "--end-time", "2000", "--average", "100"], ["sweep_runs.csv"]),
     ChuteStudy("flowmap_long", "flowmap", ["--lambda", "1", "--heights", "30", "--angles", "26",
                                            "--end-time", "2000", "--average", "100"], [], job="flowmap_long_H30"),
+    ChuteStudy("flowmap_long", "flowmap", ["--lambda", "1", "--heights", "20,30", "--angles", "28",
+                                           "--end-time", "2000", "--average", "100"], [], job="flowmap_long_28",
+               continue_from="flowmap"),
 ] + validation_sensitivity.studies(ChuteStudy)
 CHUTE_CASE_FILES = ["summary.json", "chute_profile.csv", "chute_series.csv"]
 # Weinhart et al. 2012, Table 1, lambda = 1, and the agreement issue 26 asks for.
@@ -262,8 +270,9 @@ def slurm_options(args, study_name):
 def run_chute_study(study, args, runs):
     out = study.folder(runs)
     restore_kept_chute(study, out)
-    run_study_command(args, study.command, str(ROOT / study.scenario), *study.options, "--jobs", str(args.jobs),
-                      "--out", str(out), *slurm_options(args, f"{study.paper}_{study.job}"))
+    earlier = ["--continue-from", str(runs / study.paper / study.continue_from)] if study.continue_from else []
+    run_study_command(args, study.command, str(ROOT / study.scenario), *study.options, *earlier, "--jobs",
+                      str(args.jobs), "--out", str(out), *slurm_options(args, f"{study.paper}_{study.job}"))
     if not args.slurm:
         compact_chute(study, out)
 
@@ -1149,6 +1158,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
     flowmap = [r for r in validation_closures.kept_rows(chute_fits, out / "flowmap") if r.get("lambda") == 1.0]
     long_runs = [r for r in validation_closures.kept_rows(chute_fits, out / "flowmap_long") if r.get("lambda") == 1.0]
     runs = staircase + flowmap
+    flows = validation_closures.steady(validation_closures.with_long_runs(flowmap, long_runs))
     lines += ["## Weinhart et al. 2012: h_stop and the flow rule, lambda = 1", ""]
     if not intervals and not runs:
         lines += ["No chute cases have run yet (`scripts/validate.sh run --only hstop,flowmap`).", ""]
@@ -1175,7 +1185,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
     table["staircase_complete"] = complete
     table["staircase_max_H"] = max_h
     table["flow_map_cases"] = len(flowmap)
-    fixed = fixed_a_fit(chute_fits, intervals, hs, validation_closures.steady(flowmap))
+    fixed = fixed_a_fit(chute_fits, intervals, hs, flows)
     if fixed:
         for name in ("delta1", "delta2"):
             table[name + "_with_paper_A"] = fixed["params"][name]
@@ -1192,7 +1202,6 @@ def weinhart_report(lines, figures, base=VALIDATION):
             table[name + "_mle_err"] = validation_hstop_mle.half_width(mle["interval"][name])
             table[name + "_mle_lo"], table[name + "_mle_hi"] = mle["interval"][name]
         table["sigma_mle"] = mle["sigma"]
-        flows = validation_closures.steady(flowmap)
         if len(flows) >= 3:  # the flow rule through that curve, as through Talus' own and the paper's
             p, pse, _ = chute_fits.fit_flow_rule([r["h"] for r in flows], [r["angle"] for r in flows],
                                                  [r["froude"] for r in flows], mle["params"])
@@ -1274,8 +1283,7 @@ def weinhart_report(lines, figures, base=VALIDATION):
                      else ("(held)" if name == "A" and "delta1_with_paper_A" in table else ""))
         lines.append(f"| {name} | {v:.4g} ± {e:.2g} | {paper} | {v - paper:+.3g} | {verdict} | {held_text} | {mle_text} |")
     lines.append("")
-    return table, {"resolution": resolution, "closures": validation_closures.closures(
-        chute_fits, validation_closures.steady(flowmap), paper_hstop)}
+    return table, {"resolution": resolution, "closures": validation_closures.closures(chute_fits, flows, paper_hstop)}
 
 
 def report(_args):

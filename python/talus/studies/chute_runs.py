@@ -47,9 +47,10 @@ class Runner:
     """Starts `talus run` processes through a case pool (case_pool.py: `jobs` at once here,
     or one per rank under mpirun) and reports finished cases."""
 
-    def __init__(self, talus, scenario, out, jobs, overrides, quiet=False):
+    def __init__(self, talus, scenario, out, jobs, overrides, quiet=False, continue_from=None, end_time=None):
         self.talus, self.scenario, self.out = talus, scenario, out
         self.overrides, self.quiet = list(overrides), quiet
+        self.continue_from, self.end_time = continue_from, end_time
         self.pool = case_pool.open_pool(jobs, "chute study")
         self.started = {}  # case -> start time
         self.done = {}     # case -> summary
@@ -82,9 +83,28 @@ class Runner:
         if os.path.exists(os.path.join(self.folder(case), "checkpoints", "latest.h5")):
             return [self.talus, "resume", self.folder(case), "--quiet", "--threads", "1"]
         cmd = [self.talus, "run", self.scenario, "--out", self.folder(case), "--overwrite", "--quiet", "--threads", "1"]
+        earlier = self.earlier_end(case)
+        if earlier:
+            cmd += ["--restart", earlier]
         for o in case_overrides(case, self.overrides):
             cmd += ["--set", o]
         return cmd
+
+    def earlier_end(self, case):
+        """The final checkpoint of the case in the earlier sweep (continue_from) when that run went
+        to its end time before this one's: the run goes on from there with this sweep's scenario
+        (its later averaging window included), which gives the bits of a run from the start."""
+        if not self.continue_from:
+            return None
+        folder = os.path.join(self.continue_from, case_name(*case))
+        checkpoint = os.path.join(folder, "checkpoints", "latest.h5")
+        try:
+            with open(os.path.join(folder, "summary.json")) as f:
+                s = json.load(f)
+        except FileNotFoundError:
+            return None
+        ended = s.get("stop_reason") == "end_time" and os.path.exists(checkpoint)
+        return os.path.realpath(checkpoint) if ended and s.get("final_time", 0) < self.end_time else None
 
     def start(self, case):
         if case in self.started or self.cached(case) is not None:

@@ -31,12 +31,15 @@ def run(a):
                  "run.checkpoint_keep=1"] + a.overrides
     if not cases:
         sys.exit("flowmap: no case (empty --lambda, --heights or --angles)")
+    if a.continue_from and not os.path.isdir(a.continue_from):
+        sys.exit("flowmap: --continue-from %s: no such folder" % a.continue_from)
     engine.check_scenario(a.talus, a.scenario, chute_runs.case_overrides(cases[a.case_index or 0], overrides))
     if a.slurm:
         slurm_array.write_script(a.slurm, len(cases), "talus-flowmap", a.out, slurm_array.task_argv(a.argv, a.talus),
                                  a.slurm_time)
         return
-    runner = chute_runs.Runner(a.talus, a.scenario, a.out, a.jobs, overrides)
+    runner = chute_runs.Runner(a.talus, a.scenario, a.out, a.jobs, overrides, continue_from=a.continue_from,
+                               end_time=a.end_time)
     mine = cases if a.case_index is None else [cases[a.case_index]]
     pending = [c for c in mine if runner.cached(c) is None]
     print("sweep: %d cases, %d to run" % (len(mine), len(pending)), flush=True)

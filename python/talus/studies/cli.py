@@ -100,6 +100,9 @@ def parser():
     p.add_argument("--out", default="results/sweep", help="results folder")
     p.add_argument("--checkpoint-interval", type=float, default=50,
                    help="time units between checkpoints of each case, which an interrupted case resumes from")
+    p.add_argument("--continue-from", metavar="DIR",
+                   help="an earlier, shorter sweep: a case it ran to its end time goes on from its final checkpoint "
+                        "(the same bits as a run from the start)")
     add_engine_options(p)
     return top
 

@@ -178,6 +178,14 @@ class ChuteObserver final : public RunObserver {
     cg_seconds_ = j.at("cg_seconds").get<double>();
     series_ = ChuteSeries(c_.series_interval);
     if (j.contains("series")) series_.restore(j.at("series"));  // checkpoints written before the series had none
+    // A restart with a later window (a finished run extended with a new run.end_time and
+    // coarse_graining.start) must not keep the samples the earlier window took: they were all taken
+    // before the next snapshot was due, so before the window that now begins.
+    if (c_.coarse_grain && next_snapshot_ < c_.start - 0.5 * c_.time_step) {
+      for (WidthAverage& w : widths_) w.average = {};
+      series_ = ChuteSeries(c_.series_interval);
+      next_snapshot_ = c_.start;
+    }
   }
 
  private:
