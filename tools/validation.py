@@ -221,8 +221,9 @@ class ChuteStudy:
 # core-hours); flowmap_long runs two of its cases to t = 2000, and the one whose F drifted most
 # within its window (H = 30 at 26 deg), and the report sets the Froude numbers of both lengths
 # side by side, which is what licenses the shorter runs. The 28 deg flows still accelerate at
-# t = 500, so flowmap_long runs them on from the map's final states to t = 2000, and the flow
-# rule takes the long run of a case where there is one.
+# t = 500, so flowmap_long runs them to t = 2000 too. A long case goes on from the map's final
+# state where the runs folder still holds it (a quarter of its cost saved), and the flow rule
+# takes the long run of a case where there is one.
 CHUTE_STUDIES = [
     ChuteStudy("hstop", "hstop", ["--lambda", "1"], ["hstop_runs.csv", "hstop_intervals.csv"]),
     ChuteStudy("flowmap", "flowmap", ["--lambda", "1", "--heights", "10,20,30,40", "--angles", "22,24,26,28",
@@ -230,7 +231,8 @@ CHUTE_STUDIES = [
     ChuteStudy("flowmap_long", "flowmap", ["--lambda", "1", "--heights", "10,20", "--angles", "24",
                                            "--end-time", "2000", "--average", "100"], ["sweep_runs.csv"]),
     ChuteStudy("flowmap_long", "flowmap", ["--lambda", "1", "--heights", "30", "--angles", "26",
-                                           "--end-time", "2000", "--average", "100"], [], job="flowmap_long_H30"),
+                                           "--end-time", "2000", "--average", "100"], [], job="flowmap_long_H30",
+               continue_from="flowmap"),
     ChuteStudy("flowmap_long", "flowmap", ["--lambda", "1", "--heights", "20,30", "--angles", "28",
                                            "--end-time", "2000", "--average", "100"], [], job="flowmap_long_28",
                continue_from="flowmap"),
