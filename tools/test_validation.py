@@ -484,6 +484,21 @@ class Validation(unittest.TestCase):
         [line, _] = validation_closures.length_effect_lines(checks, rule)
         self.assertIn("beyond its standard error 0.004", line)
         self.assertEqual(validation_closures.length_effect_lines([], rule), [])
+        # Of the fit's three flows on Table 1's rule, the one already run to t = 2000 is not scaled:
+        # the other two, 2.8 % faster, move beta by less than 2.8 % of it, and by nothing once every
+        # flow ran to t = 2000.
+        hs = {k: validation.TABLE1[k] for k in ("A", "delta1", "delta2")}
+        rows = [{"H": H, "angle": a, "h": H, "froude": float(0.196 * H / chute_fits.hstop35(a, **hs) - 0.04),
+                 "study": study} for H, a, study in ((10, 24, "flowmap"), (20, 26, "flowmap"), (30, 28, "flowmap_long"))]
+        rule = validation_closures.flow_rule(chute_fits, rows, hs)
+        [line, _] = validation_closures.length_effect_lines(checks, rule, chute_fits, rows, hs)
+        self.assertIn("The fit takes 1 of its 3 flows from t = 2000. Were the other 2 flows' F all +2.8% higher", line)
+        shift = abs(float(line.split(" and beta by ")[1].split(",")[0]))
+        self.assertGreater(shift, 0)
+        self.assertLess(shift, 0.028 * 0.196)
+        every = [dict(r, study="flowmap_long") for r in rows]
+        [line, _] = validation_closures.length_effect_lines(checks, rule, chute_fits, every, hs)
+        self.assertIn("Every flow of the fit ran to t = 2000.", line)
 
     def test_flow_map_closures_and_run_length(self):
         # Steady flows made from the paper's closures (Table 1's flow rule and h_stop, Eqs. 52-54)
